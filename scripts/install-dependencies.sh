@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs what Bezoutian needs on Debian bookworm (run as root). Skips apt when everything is present.
+set -euo pipefail
+packages=(g++ cmake make ccache libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
+          catch2 nlohmann-json3-dev libcli11-dev libflint-dev libeigen3-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
