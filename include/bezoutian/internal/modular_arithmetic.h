@@ -193,8 +193,10 @@ public:
     }
     P_ = CGAL::Gmpz(1);
     for (u64 p : primes_) P_ *= Montgomery_modulus::gmpz_from_u64(p);
-    half_P_ = P_;
-    mpz_fdiv_q_2exp(half_P_.mpz(), half_P_.mpz(), 1);
+    // CGAL::Gmpz shares its representation between copies and mpz() gives
+    // write access without copy-on-write: write only into fresh objects.
+    half_P_ = CGAL::Gmpz();
+    mpz_fdiv_q_2exp(half_P_.mpz(), P_.mpz(), 1);
   }
 
   const CGAL::Gmpz& product() const { return P_; }
@@ -214,7 +216,7 @@ public:
       digits_[i] = M.from_montgomery(y);
     }
     // X = y_0 + p_0 (y_1 + p_1 (y_2 + ...)).
-    mpz_set_ui(out.mpz(), 0);
+    out = CGAL::Gmpz(0); // fresh representation (out may share one with other copies)
     for (std::size_t i = k; i-- > 0;) {
       if (i + 1 < k) mul_u64(out, primes_[i]);
       add_u64(out, digits_[i]);
