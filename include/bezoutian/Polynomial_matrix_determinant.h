@@ -218,6 +218,40 @@ inline u64 scaled_determinant_mod_p(u64* a, std::size_t n, const Montgomery_modu
   return negate ? M.neg(det) : det;
 }
 
+/// Values of the polynomial c_0 + c_1 x + ... + c_d x^d (coefficients c[i*cs],
+/// Montgomery residues; d < 0 for the zero polynomial) at x = 0, 1, ..., N-1,
+/// written to out[x*os]. The values at 0..d come from Horner's rule; further
+/// values come from the table of forward differences, whose d-th difference is
+/// constant, so that each further value costs d modular additions.
+inline void tabulate_at_consecutive_integers(const u64* c, std::size_t cs, int d, std::size_t N, u64* out,
+                                             std::size_t os, const Montgomery_modulus& M,
+                                             const std::vector<u64>& node, std::vector<u64>& work) {
+  if (d < 0) {
+    for (std::size_t x = 0; x < N; ++x) out[x * os] = 0;
+    return;
+  }
+  const std::size_t dd = std::size_t(d);
+  const std::size_t m = std::min(dd + 1, N); // points evaluated directly
+  work.resize(dd + 1);
+  for (std::size_t x = 0; x < m; ++x) {
+    u64 y = c[dd * cs];
+    for (std::size_t k = dd; k-- > 0;) y = M.add(M.mul(y, node[x]), c[k * cs]);
+    work[x] = y;
+  }
+  if (N <= dd + 1) {
+    for (std::size_t x = 0; x < N; ++x) out[x * os] = work[x];
+    return;
+  }
+  // work[j] <- j-th forward difference at x = 0.
+  for (std::size_t j = 1; j <= dd; ++j)
+    for (std::size_t i = dd; i >= j; --i) work[i] = M.sub(work[i], work[i - 1]);
+  u64* w = work.data();
+  for (std::size_t x = 0; x < N; ++x) {
+    out[x * os] = w[0];
+    for (std::size_t j = 0; j < dd; ++j) w[j] = M.add(w[j], w[j + 1]);
+  }
+}
+
 /// In place: values f[0], f[s], ..., f[D*s] of a polynomial of degree <= D at
 /// x = 0, 1, ..., D (Montgomery residues) become its coefficients. Newton
 /// divided differences (the nodes x_{i+j} - x_i = j, so level j divides by j)
@@ -263,8 +297,8 @@ inline std::vector<CGAL::Gmpz> multimodular_determinant(const std::vector<Dense_
 
   std::vector<u64> residues(npts * np); // [coefficient][prime]
   std::vector<u64> R;                   // entry coefficients mod p, padded to su x sv
-  std::vector<u64> C(nn * sv);          // entries evaluated at u = a: coefficients in v
-  std::vector<u64> upow(su), vpow(nv * sv);
+  std::vector<u64> Cu;                  // c_{e,l}(a) at Cu[(e*sv + l)*nu + a]
+  std::vector<u64> Fd(nn * sv);         // forward differences in v, all entries side by side
   std::vector<u64> mat(nn), num(npts), scale(npts), prefix(npts);
   std::vector<u64> inv, node, work;
 
@@ -294,35 +328,49 @@ inline std::vector<CGAL::Gmpz> multimodular_determinant(const std::vector<Dense_
       node[j] = M.to_montgomery(static_cast<u64>(j));
       inv[j] = M.to_montgomery(plain_inv[j]);
     }
-    for (std::size_t b = 0; b < nv; ++b) {
-      u64 x = M.one();
-      for (std::size_t l = 0; l < sv; ++l) vpow[b * sv + l] = x, x = M.mul(x, node[b]);
-    }
-    Lazy_sum acc(M);
+    // Stage 1: the coefficients c_{e,l}(u) of v^l in entry e, tabulated at u = 0..Du.
+    Cu.assign(nn * sv * nu, 0);
+    for (std::size_t e = 0; e < nn; ++e)
+      for (int l = 0; l <= A[e].dv; ++l)
+        tabulate_at_consecutive_integers(&R[(e * sv + l) * su], 1, A[e].du, nu, &Cu[(e * sv + l) * nu], 1, M, node,
+                                         work);
+    // Stage 2: for each u = a, the entries (polynomials in v of degree <= dv_max)
+    // are tabulated at v = 0..Dv by forward differences, all entries side by
+    // side (Fd[j*nn + e] = j-th difference of entry e) so that the inner loop
+    // runs over the nn independent entries; then one determinant modulo p per
+    // grid point.
     for (std::size_t a = 0; a < nu; ++a) {
-      u64 x = M.one();
-      for (std::size_t k = 0; k < su; ++k) upow[k] = x, x = M.mul(x, node[a]);
-      for (std::size_t e = 0; e < nn; ++e) {
-        const Dense_polynomial_entry& E = A[e];
-        for (std::size_t l = 0; l < sv; ++l) {
-          if (E.is_zero() || int(l) > E.dv) { C[e * sv + l] = 0; continue; }
-          const u64* r = &R[(e * sv + l) * su];
-          acc.clear();
-          for (int k = 0; k <= E.du; ++k) acc.add_product(r[k], upow[k]);
-          C[e * sv + l] = M.reduce(acc.value());
-        }
-      }
-      for (std::size_t b = 0; b < nv; ++b) {
-        const u64* vp = &vpow[b * sv];
+      // Values at v = 0..dv_max (Horner), or at all grid points if there are fewer.
+      const std::size_t direct = std::min(sv, nv);
+      for (std::size_t x = 0; x < direct; ++x)
         for (std::size_t e = 0; e < nn; ++e) {
-          const Dense_polynomial_entry& E = A[e];
-          if (E.is_zero()) { mat[e] = 0; continue; }
-          const u64* c = &C[e * sv];
-          acc.clear();
-          for (int l = 0; l <= E.dv; ++l) acc.add_product(c[l], vp[l]);
-          mat[e] = M.reduce(acc.value());
+          const int dv = A[e].dv;
+          u64 y = 0;
+          if (dv >= 0) {
+            const u64* c = &Cu[e * sv * nu + a];
+            y = c[std::size_t(dv) * nu];
+            for (std::size_t l = std::size_t(dv); l-- > 0;) y = M.add(M.mul(y, node[x]), c[l * nu]);
+          }
+          Fd[x * nn + e] = y;
         }
+      if (nv <= sv) {
+        for (std::size_t b = 0; b < nv; ++b) {
+          std::copy(&Fd[b * nn], &Fd[b * nn] + nn, mat.begin());
+          num[a * nv + b] = scaled_determinant_mod_p(mat.data(), n, M, scale[a * nv + b]);
+        }
+        continue;
+      }
+      for (std::size_t j = 1; j < sv; ++j)
+        for (std::size_t i = sv - 1; i >= j; --i)
+          for (std::size_t e = 0; e < nn; ++e) Fd[i * nn + e] = M.sub(Fd[i * nn + e], Fd[(i - 1) * nn + e]);
+      for (std::size_t b = 0; b < nv; ++b) {
+        std::copy(&Fd[0], &Fd[0] + nn, mat.begin());
         num[a * nv + b] = scaled_determinant_mod_p(mat.data(), n, M, scale[a * nv + b]);
+        for (std::size_t j = 0; j + 1 < sv; ++j) {
+          u64* lo = &Fd[j * nn];
+          const u64* hi = &Fd[(j + 1) * nn];
+          for (std::size_t e = 0; e < nn; ++e) lo[e] = M.add(lo[e], hi[e]);
+        }
       }
     }
     // Batch inversion of the scales (Montgomery's trick): one inverse per prime.

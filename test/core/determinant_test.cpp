@@ -275,6 +275,22 @@ TEST_CASE("determinant: large (200-bit) coefficients", "[determinant]") {
   CHECK(bezoutian::polynomial_matrix_determinant(N) == cgal_determinant(N));
 }
 
+TEST_CASE("determinant: more primes than the cached table, entries above the degree bound", "[determinant]") {
+  Random rnd(20260107);
+  // 8x8 with 520-bit coefficients: the coefficient bound needs more than 64 word primes.
+  Matrix<P1> N(8, std::vector<P1>(8));
+  for (auto& row : N)
+    for (auto& e : row) e = rnd.poly2_big(1, 0, 520)[0];
+  CHECK(bezoutian::polynomial_matrix_determinant(N) == bezoutian::berkowitz_determinant(N));
+  // An entry of high degree that lies on no permutation of nonzero entries:
+  // the evaluation grid is smaller than its degree.
+  const P2 f = rnd.poly2(1, 1, 5), g = rnd.poly2(9, 11, 5), h = rnd.poly2(2, 1, 5);
+  Matrix<P2> T{{f, g}, {P2(0), h}};
+  CHECK(bezoutian::polynomial_matrix_determinant(T) == f * h);
+  Matrix<P1> T1{{f[0], g[3]}, {P1(0), h[1]}};
+  CHECK(bezoutian::polynomial_matrix_determinant(T1) == f[0] * h[1]);
+}
+
 TEST_CASE("determinant: modular helpers", "[determinant]") {
   using namespace bezoutian::internal;
   // Known primes / composites (2^61 - 1 is a Mersenne prime; 2^62 - 57 is the largest prime below 2^62).
