@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <bezoutian/Bezoutian.h>
+#include <bezoutian/Polynomial_matrix_determinant.h>
 #include <bezoutian/Separated_variable_resultants.h>
 #include <bezoutian/Surface_bezoutian_matrices.h>
 
@@ -815,12 +816,14 @@ TEST_CASE("Theorem 2: det B divides a cascade of CGAL resultants", "[bezoutian][
 
 TEST_CASE("Sizes and degrees of det B on random surfaces match the note's table", "[bezoutian][degrees]") {
   struct Row { bool self; int m, n; std::size_t size; int deg_u, deg_v, total_poly, total_rat; std::size_t terms_poly, terms_rat; };
-  // shared/notes/bezoutian-construction-pitfalls.md (terms only where D is expanded here).
+  // shared/notes/bezoutian-construction-pitfalls.md
   const std::vector<Row> table{
-      {true, 2, 2, 3, 10, 10, 14, 20, 97, 121},   {true, 3, 2, 5, 26, 18, 34, 44, 0, 0},
-      {true, 3, 3, 8, 44, 44, 64, 88, 0, 0},      {false, 2, 2, 4, 16, 16, 24, 32, 249, 289},
-      {false, 3, 2, 6, 36, 24, 48, 60, 0, 0},     {false, 3, 3, 9, 54, 54, 81, 108, 0, 0}};
-  std::uint64_t seed = 1000;
+      {true, 2, 2, 3, 10, 10, 14, 20, 97, 121},     {true, 3, 2, 5, 26, 18, 34, 44, 423, 513},
+      {true, 3, 3, 8, 44, 44, 64, 88, 1701, 2025},  {false, 2, 2, 4, 16, 16, 24, 32, 249, 289},
+      {false, 3, 2, 6, 36, 24, 48, 60, 799, 925},   {false, 3, 3, 9, 54, 54, 81, 108, 2620, 3025}};
+  // The term counts are those of generic surfaces; a particular surface can lose a
+  // few terms by coincidence (seen: 1698 instead of 1701), hence fixed seeds.
+  std::uint64_t seed = 3000;
   for (const Row& row : table) {
     for (bool rational : {false, true}) {
       INFO("self=" << row.self << " (m,n)=(" << row.m << "," << row.n << ") rational=" << rational);
@@ -830,7 +833,14 @@ TEST_CASE("Sizes and degrees of det B on random surfaces match the note's table"
                               : bezoutian::intersection_matrix(phi, psi, row.m, row.n);
       REQUIRE(B.size() == row.size);
       CHECK(is_symmetric(B.entries));
-      // Degrees of D through restrictions to lines (exact univariate determinants).
+      // D expanded by the project's determinant engine.
+      const Degree_info d = degrees(bezoutian::polynomial_matrix_determinant(B.entries));
+      CHECK(d.deg_u == row.deg_u);
+      CHECK(d.deg_v == row.deg_v);
+      CHECK(d.total == (rational ? row.total_rat : row.total_poly));
+      CHECK(d.terms == (rational ? row.terms_rat : row.terms_poly));
+      if (row.size > 6) continue;
+      // Independently, degrees of D through restrictions to lines (Berkowitz on univariate entries).
       auto restricted_det = [&](const Rational& u0, const Rational& u1, const Rational& v0, const Rational& v1) {
         std::vector<std::vector<Q1>> a(B.size(), std::vector<Q1>(B.size()));
         for (std::size_t i = 0; i < B.size(); ++i)
@@ -841,13 +851,7 @@ TEST_CASE("Sizes and degrees of det B on random surfaces match the note's table"
       CHECK(restricted_det(rat(-5, 11), Rational(0), Rational(0), Rational(1)).degree() == row.deg_v);
       CHECK(restricted_det(rat(2, 9), rat(4, 5), rat(-1, 3), rat(7, 6)).degree() ==
             (rational ? row.total_rat : row.total_poly));
-      if (row.terms_poly != 0) {
-        const Degree_info d = degrees(berkowitz_det(B.entries));
-        CHECK(d.deg_u == row.deg_u);
-        CHECK(d.deg_v == row.deg_v);
-        CHECK(d.total == (rational ? row.total_rat : row.total_poly));
-        CHECK(d.terms == (rational ? row.terms_rat : row.terms_poly));
-      }
+      if (row.size <= 4) CHECK(berkowitz_det(B.entries) == bezoutian::polynomial_matrix_determinant(B.entries));
     }
   }
 }
