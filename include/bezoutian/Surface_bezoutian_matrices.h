@@ -52,11 +52,15 @@ namespace internal {
 
 using Surface_Q2 = Polynomial_2<Rational>;
 using Surface_Q1 = Polynomial_1<Rational>;
+using Surface_Z2 = Polynomial_2<Integer>;
+using Surface_Z1 = Polynomial_1<Integer>;
+template <class NT>
+using Grid = std::vector<std::vector<NT>>;  // c[a][b]: coefficient of u^a v^b (or s^a t^b)
 
 // Dense coefficient grid c[a][b] of u^a v^b, of size (m+1) x (n+1); throws if P
 // has a larger degree.
-inline std::vector<std::vector<Rational>> coefficient_grid(const Surface_Q2& p, int m, int n, const char* what) {
-  std::vector<std::vector<Rational>> c(m + 1, std::vector<Rational>(n + 1, Rational(0)));
+inline Grid<Rational> coefficient_grid(const Surface_Q2& p, int m, int n, const char* what) {
+  Grid<Rational> c(m + 1, std::vector<Rational>(n + 1, Rational(0)));
   if (CGAL::is_zero(p)) return c;
   if (p.degree() > n) throw Invalid_input(std::string(what) + ": a component exceeds the declared degree in v");
   for (int b = 0; b <= p.degree(); ++b) {
@@ -69,33 +73,34 @@ inline std::vector<std::vector<Rational>> coefficient_grid(const Surface_Q2& p, 
 }
 
 // Polynomial_2 from a grid c[a][b] (a = exponent of the inner variable).
-inline Surface_Q2 from_grid(const std::vector<std::vector<Rational>>& c) {
-  if (c.empty()) return Surface_Q2(0);
+template <class NT>
+Polynomial_2<NT> from_grid(const Grid<NT>& c) {
+  if (c.empty()) return Polynomial_2<NT>(0);
   const std::size_t na = c.size(), nb = c[0].size();
-  std::vector<Surface_Q1> outer;
+  std::vector<Polynomial_1<NT>> outer;
   for (std::size_t b = 0; b < nb; ++b) {
-    std::vector<Rational> inner;
+    std::vector<NT> inner;
     for (std::size_t a = 0; a < na; ++a) inner.push_back(c[a][b]);
-    outer.push_back(Surface_Q1(inner.begin(), inner.end()));
+    outer.push_back(Polynomial_1<NT>(inner.begin(), inner.end()));
   }
-  return Surface_Q2(outer.begin(), outer.end());
+  return Polynomial_2<NT>(outer.begin(), outer.end());
 }
 
-inline std::vector<std::vector<Rational>> binomial_table(int d) {
-  std::vector<std::vector<Rational>> c(d + 1, std::vector<Rational>(d + 1, Rational(0)));
+inline Grid<Integer> binomial_table(int d) {
+  Grid<Integer> c(d + 1, std::vector<Integer>(d + 1, Integer(0)));
   for (int i = 0; i <= d; ++i) {
-    c[i][0] = Rational(1);
-    for (int j = 1; j <= i; ++j) c[i][j] = c[i - 1][j - 1] + (j <= i - 1 ? c[i - 1][j] : Rational(0));
+    c[i][0] = Integer(1);
+    for (int j = 1; j <= i; ++j) c[i][j] = c[i - 1][j - 1] + c[i - 1][j];
   }
   return c;
 }
 
-// Coefficients (in Q[u,v]) of P(u, v + k) as a polynomial in k, degree <= n.
-inline std::vector<Surface_Q2> shift_in_v(const std::vector<std::vector<Rational>>& g, int m, int n) {
+// Coefficients (in Z[u,v]) of P(u, v + k) as a polynomial in k, degree <= n.
+inline std::vector<Surface_Z2> shift_in_v(const Grid<Integer>& g, int m, int n) {
   const auto binom = binomial_table(n);
-  std::vector<Surface_Q2> out;
+  std::vector<Surface_Z2> out;
   for (int j = 0; j <= n; ++j) {
-    std::vector<std::vector<Rational>> c(m + 1, std::vector<Rational>(n + 1, Rational(0)));
+    Grid<Integer> c(m + 1, std::vector<Integer>(n + 1, Integer(0)));
     for (int a = 0; a <= m; ++a)
       for (int b = j; b <= n; ++b) c[a][b - j] += binom[b][j] * g[a][b];
     out.push_back(from_grid(c));
@@ -103,12 +108,12 @@ inline std::vector<Surface_Q2> shift_in_v(const std::vector<std::vector<Rational
   return out;
 }
 
-// Coefficients (in Q[u,v]) of P(u + l, v) as a polynomial in l, degree <= m.
-inline std::vector<Surface_Q2> shift_in_u(const std::vector<std::vector<Rational>>& g, int m, int n) {
+// Coefficients (in Z[u,v]) of P(u + l, v) as a polynomial in l, degree <= m.
+inline std::vector<Surface_Z2> shift_in_u(const Grid<Integer>& g, int m, int n) {
   const auto binom = binomial_table(m);
-  std::vector<Surface_Q2> out;
+  std::vector<Surface_Z2> out;
   for (int i = 0; i <= m; ++i) {
-    std::vector<std::vector<Rational>> c(m + 1, std::vector<Rational>(n + 1, Rational(0)));
+    Grid<Integer> c(m + 1, std::vector<Integer>(n + 1, Integer(0)));
     for (int a = i; a <= m; ++a)
       for (int b = 0; b <= n; ++b) c[a - i][b] += binom[a][i] * g[a][b];
     out.push_back(from_grid(c));
@@ -117,25 +122,25 @@ inline std::vector<Surface_Q2> shift_in_u(const std::vector<std::vector<Rational
 }
 
 // Coefficients of P(u, v) as a polynomial in v, each a polynomial in u
-// embedded in Q[u, t] (constant in t).
-inline std::vector<Surface_Q2> coefficients_in_v(const std::vector<std::vector<Rational>>& g, int m, int n) {
-  std::vector<Surface_Q2> out;
+// embedded in Z[u, t] (constant in t).
+inline std::vector<Surface_Z2> coefficients_in_v(const Grid<Integer>& g, int m, int n) {
+  std::vector<Surface_Z2> out;
   for (int b = 0; b <= n; ++b) {
-    std::vector<Rational> inner;
+    std::vector<Integer> inner;
     for (int a = 0; a <= m; ++a) inner.push_back(g[a][b]);
-    out.push_back(Surface_Q2(Surface_Q1(inner.begin(), inner.end())));
+    out.push_back(Surface_Z2(Surface_Z1(inner.begin(), inner.end())));
   }
   return out;
 }
 
 // Coefficients of Q(s, t) as a polynomial in s, each a polynomial in t
-// embedded in Q[u, t] (constant in u).
-inline std::vector<Surface_Q2> coefficients_in_s(const std::vector<std::vector<Rational>>& g, int m, int n) {
-  std::vector<Surface_Q2> out;
+// embedded in Z[u, t] (constant in u).
+inline std::vector<Surface_Z2> coefficients_in_s(const Grid<Integer>& g, int m, int n) {
+  std::vector<Surface_Z2> out;
   for (int a = 0; a <= m; ++a) {
-    std::vector<Surface_Q1> outer;
-    for (int b = 0; b <= n; ++b) outer.push_back(Surface_Q1(g[a][b]));
-    out.push_back(Surface_Q2(outer.begin(), outer.end()));
+    std::vector<Surface_Z1> outer;
+    for (int b = 0; b <= n; ++b) outer.push_back(Surface_Z1(g[a][b]));
+    out.push_back(Surface_Z2(outer.begin(), outer.end()));
   }
   return out;
 }
@@ -147,23 +152,58 @@ inline bool is_constant(const Surface_Q2& p, Rational& value) {
   return true;
 }
 
-// Validated coefficient grids of a patch; divides by a constant weight when the
-// polynomial formula is used (so the matrix is the one of the actual map).
-inline std::array<std::vector<std::vector<Rational>>, 4> patch_grids(const std::array<Surface_Q2, 4>& phi, int m,
-                                                                      int n, const char* what) {
+// Validated coefficient grids of a patch.
+inline std::array<Grid<Rational>, 4> patch_grids(const std::array<Surface_Q2, 4>& phi, int m, int n,
+                                                 const char* what) {
   if (m < 1 || n < 1) throw Invalid_input(std::string(what) + ": bi-degree (m, n) must have m, n >= 1");
   if (CGAL::is_zero(phi[0])) throw Invalid_input(std::string(what) + ": the weight Phi_0 is identically zero");
-  std::array<std::vector<std::vector<Rational>>, 4> g;
+  std::array<Grid<Rational>, 4> g;
   for (int i = 0; i < 4; ++i) g[i] = coefficient_grid(phi[i], m, n, what);
   return g;
 }
 
-inline void divide_grid(std::vector<std::vector<Rational>>& g, const Rational& c) {
+inline void divide_grid(Grid<Rational>& g, const Rational& c) {
   for (auto& row : g)
     for (auto& e : row) e /= c;
 }
 
-inline Bezoutian_matrix to_surface_matrix(Separated_bezoutian_matrix<Surface_Q2>&& s, bool negate,
+// The grids of one row of the determinants (component i of one or two patches)
+// times the lcm L of all their denominators. The Bezoutians are linear in each
+// row, so the matrices are computed over Z (much cheaper than over Q) and
+// divided by the product of the L's at the end.
+inline std::vector<Grid<Integer>> clear_denominators(const std::vector<const Grid<Rational>*>& grids, Integer& L) {
+  // Only value arithmetic on Gmpz: its handles share representations on copy.
+  L = Integer(1);
+  for (const auto* g : grids)
+    for (const auto& row : *g)
+      for (const auto& q : row) {
+        const Integer d = q.denominator();
+        if (d != Integer(1)) L = (L / CGAL::gcd(L, d)) * d;
+      }
+  std::vector<Grid<Integer>> out;
+  for (const auto* g : grids) {
+    Grid<Integer> z;
+    for (const auto& row : *g) {
+      std::vector<Integer> zr;
+      for (const auto& q : row) zr.push_back((L / q.denominator()) * q.numerator());
+      z.push_back(std::move(zr));
+    }
+    out.push_back(std::move(z));
+  }
+  return out;
+}
+
+inline Surface_Q2 scaled_to_rational(const Surface_Z2& p, const Rational& factor) {
+  std::vector<Surface_Q1> outer;
+  for (const Surface_Z1& q : p) {
+    std::vector<Rational> inner;
+    for (const Integer& c : q) inner.push_back(Rational(c) * factor);
+    outer.push_back(Surface_Q1(inner.begin(), inner.end()));
+  }
+  return Surface_Q2(outer.begin(), outer.end());
+}
+
+inline Bezoutian_matrix to_surface_matrix(Separated_bezoutian_matrix<Surface_Z2>&& s, const Rational& factor,
                                           std::array<std::string, 2> variables,
                                           std::array<std::string, 2> monomial_variables,
                                           Bezoutian_formula formula) {
@@ -172,10 +212,13 @@ inline Bezoutian_matrix to_surface_matrix(Separated_bezoutian_matrix<Surface_Q2>
   Bezoutian_matrix out;
   for (const auto& p : s.row_monomials) out.row_monomials.emplace_back(p.second, p.first);
   for (const auto& p : s.column_monomials) out.column_monomials.emplace_back(p.second, p.first);
-  out.entries = std::move(s.entries);
-  if (negate)
-    for (auto& row : out.entries)
-      for (auto& e : row) e = -e;
+  out.entries.reserve(s.entries.size());
+  for (const auto& row : s.entries) {
+    std::vector<Surface_Q2> r;
+    r.reserve(row.size());
+    for (const auto& e : row) r.push_back(scaled_to_rational(e, factor));
+    out.entries.push_back(std::move(r));
+  }
   out.variables = variables;
   out.monomial_variables = monomial_variables;
   out.formula = formula;
@@ -212,23 +255,31 @@ inline Bezoutian_matrix self_intersection_matrix(const std::array<Polynomial_2<R
       throw Invalid_input("self_intersection_matrix: the polynomial formula needs a constant weight Phi_0");
     // P_i = f_i(k) - g_i(l), f_i(k) = Phi_i(u, v+k) (degree n), g_i(l) = Phi_i(u+l, v) (degree m);
     // both have constant term Phi_i(u, v): the residual case, Theorem 9 with x = k, y = l.
-    std::array<std::vector<internal::Surface_Q2>, 3> f, gl;
+    std::array<std::vector<internal::Surface_Z2>, 3> f, gl;
+    Rational factor(1);
     for (int i = 0; i < 3; ++i) {
       internal::divide_grid(g[i + 1], w);
-      f[i] = internal::shift_in_v(g[i + 1], m, n);
-      gl[i] = internal::shift_in_u(g[i + 1], m, n);
+      Integer L;
+      const auto z = internal::clear_denominators({&g[i + 1]}, L);
+      factor /= Rational(L);
+      f[i] = internal::shift_in_v(z[0], m, n);
+      gl[i] = internal::shift_in_u(z[0], m, n);
     }
-    return internal::to_surface_matrix(residual_separated_bezoutian_matrix(f, gl, n, m), false, {"u", "v"},
+    return internal::to_surface_matrix(residual_separated_bezoutian_matrix(f, gl, n, m), factor, {"u", "v"},
                                        {"l", "k"}, Bezoutian_formula::polynomial);
   }
   // Theorem 5: phi_i(k) = Phi_i(u, v+k), psi_i(l) = Phi_i(u+l, v); U B V^t = det[phi, Dphi, psi, Dpsi]
   // = -(Theorem 14's Bez').
-  std::array<std::vector<internal::Surface_Q2>, 4> f, gl;
+  std::array<std::vector<internal::Surface_Z2>, 4> f, gl;
+  Rational factor(-1);
   for (int i = 0; i < 4; ++i) {
-    f[i] = internal::shift_in_v(g[i], m, n);
-    gl[i] = internal::shift_in_u(g[i], m, n);
+    Integer L;
+    const auto z = internal::clear_denominators({&g[i]}, L);
+    factor /= Rational(L);
+    f[i] = internal::shift_in_v(z[0], m, n);
+    gl[i] = internal::shift_in_u(z[0], m, n);
   }
-  return internal::to_surface_matrix(residual_determinantal_bezoutian_matrix(f, gl, n, m), true, {"u", "v"},
+  return internal::to_surface_matrix(residual_determinantal_bezoutian_matrix(f, gl, n, m), factor, {"u", "v"},
                                      {"l", "k"}, Bezoutian_formula::rational);
 }
 
@@ -258,22 +309,31 @@ inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Ration
       throw Invalid_input("intersection_matrix: the polynomial formula needs constant weights Phi_0, Psi_0");
     // P_i = f_i(v) - g_i(s), f_i(v) = Phi_i(u, v) over Q[u] (degree n), g_i(s) = Psi_i(s, t)
     // over Q[t] (degree m): Theorem 7 with x = v, y = s.
-    std::array<std::vector<internal::Surface_Q2>, 3> f, gs;
+    std::array<std::vector<internal::Surface_Z2>, 3> f, gs;
+    Rational factor(1);
     for (int i = 0; i < 3; ++i) {
       internal::divide_grid(gphi[i + 1], w_phi);
       internal::divide_grid(gpsi[i + 1], w_psi);
-      f[i] = internal::coefficients_in_v(gphi[i + 1], m, n);
-      gs[i] = internal::coefficients_in_s(gpsi[i + 1], m, n);
+      Integer L;
+      const auto z = internal::clear_denominators({&gphi[i + 1], &gpsi[i + 1]}, L);
+      factor /= Rational(L);
+      f[i] = internal::coefficients_in_v(z[0], m, n);
+      gs[i] = internal::coefficients_in_s(z[1], m, n);
     }
-    return internal::to_surface_matrix(dense_separated_bezoutian_matrix(f, gs, n, m), false, {"u", "t"},
+    return internal::to_surface_matrix(dense_separated_bezoutian_matrix(f, gs, n, m), factor, {"u", "t"},
                                        {"s", "v"}, Bezoutian_formula::polynomial);
   }
-  std::array<std::vector<internal::Surface_Q2>, 4> f, gs;
+  // Theorem 3: U B V^t = det[phi, Dphi, psi, Dpsi] = -(Theorem 12's Bez').
+  std::array<std::vector<internal::Surface_Z2>, 4> f, gs;
+  Rational factor(-1);
   for (int i = 0; i < 4; ++i) {
-    f[i] = internal::coefficients_in_v(gphi[i], m, n);
-    gs[i] = internal::coefficients_in_s(gpsi[i], m, n);
+    Integer L;
+    const auto z = internal::clear_denominators({&gphi[i], &gpsi[i]}, L);
+    factor /= Rational(L);
+    f[i] = internal::coefficients_in_v(z[0], m, n);
+    gs[i] = internal::coefficients_in_s(z[1], m, n);
   }
-  return internal::to_surface_matrix(dense_determinantal_bezoutian_matrix(f, gs, n, m), true, {"u", "t"},
+  return internal::to_surface_matrix(dense_determinantal_bezoutian_matrix(f, gs, n, m), factor, {"u", "t"},
                                      {"s", "v"}, Bezoutian_formula::rational);
 }
 
