@@ -541,6 +541,7 @@ TEST_CASE("bad JSON input: Parse_error at the offending value", "[formats][error
       {"{\"curve\": {\"points\": [[0, 0], [1, @true]]}}", "expected the y coordinate"},
       {"{\"curve\": {\"points\": [[0, 0], [1, @+1]]}}", "expected a JSON value"},
       {"{\"curve\": {\"points\": [[0, 0], [1, 0@x1p3]]}}", "hex floats and fractions must be strings"},
+      {"{\"curve\": {\"points\": [[0, 0@7]]}}", "leading zeros"},
       {"{\"curve\": {\"points\": [[0, 0], [\"1e@999999\", 1]]}}", "exponent too large"},
       {"{\"curve\": {\n  \"degree\": 3,\n  \"points\": @[[0, 0], [1, 1], [2, 0]]\n}}", "expected 4 control points (degree 3), got 3"},
       {"{\"curve\": {\"points\": [[0, 0], [1, 1], [2, 0]],\n \"weights\": @[1, 2]}}", "expected 3 weights"},
@@ -591,6 +592,9 @@ TEST_CASE("bad JSON input: Parse_error at the offending value", "[formats][error
       {"{\"curve\": {\"basis\": \"power\", \"parameter\": @\"2t\", \"x\": \"t\", \"y\": \"t\"}}", "expected a parameter name"},
   };
   for (const auto& row : table) check_parse_error(json, "bad.json", row.first, row.second);
+
+  // a UTF-8 byte order mark is skipped
+  CHECK(read_json("\xEF\xBB\xBF{\"curve\": {\"points\": [[0, 0]]}}").curves_2.size() == 1);
 
   // deeply nested junk: an error at the first bracket that is too deep, no stack overflow
   const std::string deep = std::string(max_json_depth, '[') + "@" + std::string(100000, '[');

@@ -27,7 +27,8 @@ inline Geometry_document read_bpt(const std::string& text, const std::string& fi
   if (in.at_end()) in.fail_at_end("empty file; expected the number of patches");
   // each patch takes at least 5 tokens ("0 0 x y z")
   const std::size_t count = in.take_count("the number of patches", 0, (in.remaining() - 1) / 5,
-                                          "each patch needs at least 5 more numbers");
+                                          "only " + std::to_string(in.remaining() - 1) +
+                                              " numbers follow and each patch needs at least 5: is the file truncated?");
   Geometry_document doc;
   for (std::size_t p = 0; p < count; ++p) {
     const std::string patch = "patch " + std::to_string(p);
@@ -37,10 +38,10 @@ inline Geometry_document read_bpt(const std::string& text, const std::string& fi
     // (m+1)(n+1) points of 3 numbers each must follow the two degrees
     const std::size_t left = in.remaining() >= 2 ? (in.remaining() - 2) / 3 : 0;  // points that can follow
     const std::size_t m = in.take_count("the degree in u of " + patch, 0, left == 0 ? 0 : left - 1,
-                                        "only " + std::to_string(left) + " points can follow");
+                                        "only " + std::to_string(left) + " points follow: is the file truncated?");
     const std::size_t n = in.take_count("the degree in v of " + patch, 0, left / (m + 1) == 0 ? 0 : left / (m + 1) - 1,
-                                        "only " + std::to_string(left) + " points can follow for " +
-                                            std::to_string(m + 1) + " rows");
+                                        "only " + std::to_string(left) + " points follow for " + std::to_string(m + 1) +
+                                            " rows: is the file truncated?");
     std::vector<std::vector<Geometry_document::Patch::Point>> net(m + 1, std::vector<Geometry_document::Patch::Point>(n + 1));
     static const char* const axis[3] = {"x", "y", "z"};
     for (std::size_t r = 0; r <= m; ++r)

@@ -25,14 +25,15 @@ inline Geometry_document read_dat(const std::string& text, const std::string& fi
   if (in.at_end()) in.fail_at_end("empty file; expected the number of curves");
   // each curve takes at least 3 tokens ("1 x y")
   const std::size_t n = in.take_count("the number of curves", 0, (in.remaining() - 1) / 3,
-                                      "each curve needs at least 3 more numbers");
+                                      "only " + std::to_string(in.remaining() - 1) +
+                                          " numbers follow and each curve needs at least 3: is the file truncated?");
   Geometry_document doc;
   for (std::size_t c = 0; c < n; ++c) {
     const std::string curve = "curve " + std::to_string(c);
     if (in.at_end()) in.fail_at_end("unexpected end of file; expected " + curve + " (" + std::to_string(n) +
                                     " curves were announced)");
     const std::size_t k = in.take_count("the number of control points of " + curve, 1, (in.remaining() - 1) / 2,
-                                        "only " + std::to_string(in.remaining() - 1) + " numbers follow");
+                                        "only " + std::to_string(in.remaining() - 1) + " numbers follow: is the file truncated?");
     std::vector<Geometry_document::Curve_2::Point> points(k);
     for (std::size_t i = 0; i < k; ++i)
       for (int d = 0; d < 2; ++d)

@@ -49,6 +49,7 @@ constexpr int max_json_depth = 256;
 class Located_json {
  public:
   Located_json(std::string text, std::string file_name) : text_(std::move(text)), file_(std::move(file_name)), lines_(text_) {
+    if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) pos_ = 3;  // a UTF-8 byte order mark
     skip_space();
     if (pos_ >= text_.size()) fail_at(pos_, "empty file; expected a JSON object");
     root_ = value("", 0);
@@ -255,9 +256,11 @@ class Located_json {
         fail_at(pos_, "unexpected " + describe(pos_) + "; expected a digit " + what);
       while (pos_ < text_.size() && internal::is_digit(text_[pos_])) ++pos_;
     };
-    if (pos_ < text_.size() && text_[pos_] == '0')
+    if (pos_ < text_.size() && text_[pos_] == '0') {
       ++pos_;
-    else
+      if (pos_ < text_.size() && internal::is_digit(text_[pos_]))
+        fail_at(pos_, "leading zeros are not allowed in JSON numbers (write \"007\" as a string, or 7)");
+    } else
       digits("in the number");
     bool integer = true;
     if (pos_ < text_.size() && text_[pos_] == '.') {
