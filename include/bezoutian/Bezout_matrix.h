@@ -41,21 +41,13 @@ namespace bezoutian {
 namespace internal {
 
 template <class NT>
-NT coefficient_or_zero(const Polynomial_1<NT>& f, int i) {
+NT bezout_coefficient(const Polynomial_1<NT>& f, int i) {
   return (i >= 0 && i <= f.degree()) ? f[i] : NT(0);
 }
 
 template <class NT>
 int bezout_degree(const Polynomial_1<NT>& f, const Polynomial_1<NT>& g) {
   return std::max(CGAL::is_zero(f) ? 0 : f.degree(), CGAL::is_zero(g) ? 0 : g.degree());
-}
-
-/// x^e for a non-negative integer e.
-template <class NT>
-NT power(const NT& x, int e) {
-  NT r(1);
-  for (int i = 0; i < e; ++i) r *= x;
-  return r;
 }
 
 } // namespace internal
@@ -74,8 +66,8 @@ std::vector<std::vector<NT>> bezout_matrix(const Polynomial_1<NT>& f, const Poly
       const int lo = std::max(0, p + q + 1 - N), hi = std::min(p, q);
       for (int k = lo; k <= hi; ++k) {
         const int j = p + q + 1 - k;
-        c += internal::coefficient_or_zero(f, k) * internal::coefficient_or_zero(g, j) -
-             internal::coefficient_or_zero(f, j) * internal::coefficient_or_zero(g, k);
+        c += internal::bezout_coefficient(f, k) * internal::bezout_coefficient(g, j) -
+             internal::bezout_coefficient(f, j) * internal::bezout_coefficient(g, k);
       }
       C[p][q] = c;
       C[q][p] = c;
@@ -97,9 +89,9 @@ NT bezout_resultant(const Polynomial_1<NT>& f, const Polynomial_1<NT>& g) {
   const int m = f.degree(), n = g.degree(), N = std::max(m, n);
   NT D = internal::exact_determinant(bezout_matrix(f, g));
   long sign_exponent = long(N) * (N + 1) / 2;
-  if (m > n) D = CGAL::integral_division(D, internal::power(f.lcoeff(), m - n));
+  if (m > n) D = CGAL::integral_division(D, CGAL::ipower(f.lcoeff(), m - n));
   if (m < n) {
-    D = CGAL::integral_division(D, internal::power(g.lcoeff(), n - m));
+    D = CGAL::integral_division(D, CGAL::ipower(g.lcoeff(), n - m));
     sign_exponent += long(n) * (m + 1);
   }
   return (sign_exponent % 2 == 0) ? D : NT(-D);
@@ -209,9 +201,9 @@ std::vector<std::vector<Polynomial_2<NT>>> rational_curve_bezout_matrix(const Po
     if (!CGAL::is_zero(*c)) N = std::max(N, c->degree());
   if (N == 0) throw Invalid_input("rational_curve_bezout_matrix: the curve is constant (all components of degree 0)");
   const P2 x = CGAL::shift(P2(1), 1, 0), y = CGAL::shift(P2(1), 1, 1);
-  auto a = [&](int i) { return internal::coefficient_or_zero(X, i); };
-  auto b = [&](int i) { return internal::coefficient_or_zero(Y, i); };
-  auto d = [&](int i) { return internal::coefficient_or_zero(W, i); };
+  auto a = [&](int i) { return internal::bezout_coefficient(X, i); };
+  auto b = [&](int i) { return internal::bezout_coefficient(Y, i); };
+  auto d = [&](int i) { return internal::bezout_coefficient(W, i); };
   // |p, v_i, v_j| expanded along its first column p = (x, y, 1).
   auto bracket = [&](int i, int j) {
     return x * P2(b(i) * d(j) - b(j) * d(i)) - y * P2(a(i) * d(j) - a(j) * d(i)) + P2(a(i) * b(j) - a(j) * b(i));

@@ -65,7 +65,7 @@ struct Goldman_resolvent {
 namespace internal {
 
 template <class NT>
-NT det3(const std::array<NT, 3>& a, const std::array<NT, 3>& b, const std::array<NT, 3>& c) {
+NT goldman_bracket(const std::array<NT, 3>& a, const std::array<NT, 3>& b, const std::array<NT, 3>& c) {
   // Columns a, b, c.
   return a[0] * (b[1] * c[2] - b[2] * c[1]) - b[0] * (a[1] * c[2] - a[2] * c[1]) + c[0] * (a[1] * b[2] - a[2] * b[1]);
 }
@@ -88,10 +88,10 @@ Goldman_resolvent<NT> goldman_resolvent(const Polynomial_1<NT>& P1, const Polyno
   for (int k = 0; k < 4; ++k)
     for (int i = 0; i < 3; ++i) v[k][i] = (!CGAL::is_zero(*P[i]) && k <= P[i]->degree()) ? (*P[i])[k] : NT(0);
   Goldman_resolvent<NT> r;
-  r.d321 = internal::det3(v[3], v[2], v[1]);
-  r.d320 = internal::det3(v[3], v[2], v[0]);
-  r.d310 = internal::det3(v[3], v[1], v[0]);
-  r.d210 = internal::det3(v[2], v[1], v[0]);
+  r.d321 = internal::goldman_bracket(v[3], v[2], v[1]);
+  r.d320 = internal::goldman_bracket(v[3], v[2], v[0]);
+  r.d310 = internal::goldman_bracket(v[3], v[1], v[0]);
+  r.d210 = internal::goldman_bracket(v[2], v[1], v[0]);
   r.F1 = Polynomial_1<NT>(r.d320, r.d321);
   r.F2 = Polynomial_1<NT>(r.d310, r.d320);
   r.F3 = Polynomial_1<NT>(r.d210, r.d310);

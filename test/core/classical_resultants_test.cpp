@@ -202,6 +202,20 @@ TEST_CASE("Bezout determinant: sign convention and the extraneous factor of uneq
   }
 }
 
+TEST_CASE("Sylvester matrix with formal degrees", "[classical][sylvester]") {
+  std::mt19937 rng(4);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int m = uniform(rng, 0, 6), n = uniform(rng, 1, 6);
+    const PZ f = random_polynomial(rng, m, 9), g = random_polynomial(rng, n, 9);
+    // f read with formal degree m + 1 (leading coefficient 0): Res_{m+1,n}(f, g) = (-1)^n lc(g) Res(f, g).
+    const Z padded = internal::bareiss_determinant(sylvester_matrix(f, g, m + 1, n));
+    const Z expected = g.lcoeff() * cgal_resultant(f, g);
+    REQUIRE(padded == (n % 2 == 0 ? expected : Z(-expected)));
+    REQUIRE(Sylvester_resultant()(f, g) == cgal_resultant(f, g));
+  }
+  REQUIRE_THROWS_AS(sylvester_matrix(variable_t() * variable_t(), PZ(1), 1, 0), Invalid_input);
+}
+
 TEST_CASE("Bezout and Sylvester resultants agree with CGAL on constants and zero", "[classical][bezout]") {
   const PZ t = variable_t();
   const std::vector<PZ> cases = {PZ(0), PZ(3), PZ(-2), t + 1, 2 * t * t - 3, t * t * t};
@@ -239,7 +253,8 @@ TEST_CASE("gcd from the Bezout matrix: vanishing corner pivot, multiple roots, p
   REQUIRE(bezout_matrix(f, g)[1][1] == 0);
   REQUIRE(bezout_gcd(f, g).gcd_degree == 0);
   REQUIRE(bezout_gcd(f, g).rank == 2);
-  const auto r = bezout_gcd(f * (t - 1), g * (t - 1));
+  const auto r = Bezout_gcd()(f * (t - 1), g * (t - 1));
+  REQUIRE(Bezout_matrix()(f, g) == bezout_matrix(f, g));
   REQUIRE(r.gcd == t - 1);
   // Multiple common root.
   const PZ m = (t - 1) * (t - 1) * (t + 2);
@@ -281,6 +296,7 @@ TEST_CASE("Sylvester resultant of binary forms", "[classical][sylvester]") {
     REQUIRE(CGAL::abs(r) == CGAL::abs(cgal_resultant(f, g) * g.lcoeff()));
   }
   REQUIRE(homogeneous_sylvester_resultant(CGAL::ipower(x1, 3), CGAL::ipower(x2, 2)) == 1);
+  REQUIRE(Homogeneous_sylvester_resultant()(x1 - x2, x1 + x2) == 2);
   REQUIRE_THROWS_AS(homogeneous_sylvester_matrix(x1 * x1 + x2, x1), Invalid_input);
   REQUIRE_THROWS_AS(homogeneous_sylvester_matrix(P2Z(0), x1), Invalid_input);
 }
@@ -304,6 +320,7 @@ TEST_CASE("Macaulay resultant of linear forms is the determinant of the coeffici
                    A3[0][1] * (A3[1][0] * A3[2][2] - A3[1][2] * A3[2][0]) +
                    A3[0][2] * (A3[1][0] * A3[2][1] - A3[1][1] * A3[2][0]);
     REQUIRE(macaulay_resultant(F3) == det3);
+    REQUIRE(Macaulay_resultant()(F3) == det3);
 
     std::vector<P4Z> F4;
     Matrix_Z A4(4, std::vector<Z>(4));
@@ -446,6 +463,7 @@ TEST_CASE("Macaulay matrix of du-1989 Example 3.2.3 (eq. 3.48)", "[classical][ma
   }
   // The system has the zero (-3, 1, 1): resultant 0, rank 8, and the monomial vector is a null vector.
   REQUIRE(macaulay_resultant(F) == 0);
+  REQUIRE(Macaulay_resultant()(F) == 0);
   REQUIRE(internal::fraction_free_rank(M.matrix) == 8);
   for (std::size_t r = 0; r < 10; ++r) {
     Z s(0);
@@ -588,6 +606,7 @@ TEST_CASE("u-resultant of conics and lines with known common points", "[classica
   // generalized characteristic polynomial is used. Common zeros (1:0:0), (0:1:0), (1:1:1) twice.
   const P3Z Ru = u_resultant(std::vector<P3Z>{x * y - w * w, w * (x + y - 2 * w)});
   REQUIRE(proportional(Ru, x * y * (x + y + w) * (x + y + w)));
+  REQUIRE(U_resultant()(std::vector<P3Z>{x * y - w * w, w * (x + y - 2 * w)}) == Ru);
   // One binary form: its roots (2 : 1) and (1 : -3).
   const P2Z s1 = variable<P2Z>(0), s2 = variable<P2Z>(1);
   REQUIRE(proportional(u_resultant(std::vector<P2Z>{(s1 - 2 * s2) * (3 * s1 + s2)}), (2 * s1 + s2) * (s1 - 3 * s2)));
@@ -601,7 +620,7 @@ TEST_CASE("Goldman special resolvent of du-1989 Example 3.3.1", "[classical][gol
   const PP P1(-(P3Z(4) + x), P3Z(3), P3Z(-1), P3Z(2));
   const PP P2(-(P3Z(1) + y), P3Z(2), P3Z(-2), P3Z(1));
   const PP P3(-(P3Z(1) + z), P3Z(3), P3Z(-3), P3Z(1));
-  const auto r = goldman_resolvent(P1, P2, P3);
+  const auto r = Goldman_special_resolvent()(P1, P2, P3);
   REQUIRE(r.d320 == x - 5 * y + 3 * z + 2);
   REQUIRE(r.d321 == P3Z(-2));
   REQUIRE(r.d310 == -x + 3 * y - z - 2);
@@ -729,7 +748,7 @@ TEST_CASE("Implicitization of rational plane curves by the Bezout matrix (du-198
         Y = random_polynomial(rng, n, 6);
         W = random_polynomial(rng, n, 6);
       } while (CGAL::gcd(CGAL::gcd(X, Y), W).degree() > 0);
-      const P2Z F = bezout_implicit_equation(X, Y, W);
+      const P2Z F = Bezout_implicit_equation()(X, Y, W);
 
       // Same as the generic Bezout matrix (eq. 3.4) of X - x W and Y - y W over Z[x, y].
       auto lift = [&](const PZ& A, const PZ& B, const P2Z& v) {
