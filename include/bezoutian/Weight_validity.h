@@ -5,7 +5,10 @@
 
 #include <bezoutian/Bernstein_basis.h>
 #include <bezoutian/Error.h>
+#include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/Root_isolation.h>
+#include <bezoutian/io/Polynomial_expression.h>
 
 #include <CGAL/number_utils.h>
 
@@ -128,6 +131,40 @@ void check_no_pole(const Rational_bezier_patch<FT>& patch) {
   Pole_report<FT> r = find_weight_zero(patch);
   if (r.has_pole) throw Invalid_input("pole in the patch domain: " + r.describe());
 }
+
+/// Throws Invalid_input if the weight polynomial W(t) of `curve` has a real root in [0,1], naming the root by an
+/// isolating interval (exact rationals, proved to contain exactly that root). Weights of one strict sign prove
+/// W != 0 at once (W is a convex combination of them); otherwise the roots of W on [0,1] are isolated exactly.
+inline void check_no_pole(const Rational_bezier_curve<Rational, 2>& curve);
+inline void check_no_pole(const Rational_bezier_curve<Rational, 3>& curve);
+
+namespace internal {
+template <int D>
+void check_curve_pole(const Rational_bezier_curve<Rational, D>& curve) {
+  const auto w = curve.weights();
+  bool pos = true, neg = true;
+  for (const Rational& x : w) {
+    pos = pos && CGAL::sign(x) > 0;
+    neg = neg && CGAL::sign(x) < 0;
+  }
+  if (pos || neg) return;
+  const Polynomial_1<Rational> W = curve.power_form()[0];
+  std::vector<Isolated_root> roots = isolate_real_roots(W, Rational(0), Rational(1));
+  if (roots.empty()) return;
+  const Algebraic_real& r = roots.front().root;
+  std::ostringstream s;
+  s << "pole in the curve domain: the weight polynomial W(t) = " << io::polynomial_to_string(W, "t") << " vanishes at t ";
+  if (r.is_rational())
+    s << "= " << r.rational_value();
+  else
+    s << "in the isolating interval [" << r.lower() << ", " << r.upper() << "] (t ~ " << r.to_double() << ")";
+  if (roots.size() > 1) s << " (and at " << roots.size() - 1 << " more parameters in [0,1])";
+  throw Invalid_input(s.str());
+}
+} // namespace internal
+
+inline void check_no_pole(const Rational_bezier_curve<Rational, 2>& curve) { internal::check_curve_pole(curve); }
+inline void check_no_pole(const Rational_bezier_curve<Rational, 3>& curve) { internal::check_curve_pole(curve); }
 
 } // namespace bezoutian
 
