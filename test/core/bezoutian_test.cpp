@@ -883,7 +883,8 @@ TEST_CASE("Definition 1: univariate Bezoutian matrix determinant is the resultan
   }
 }
 
-TEST_CASE("Definition 1: maximal nonsingular minor of a non-square Bezoutian matrix", "[bezoutian][definition1]") {
+TEST_CASE("Definition 1: Bezoutian matrices with parameters and their maximal nonsingular minors",
+          "[bezoutian][definition1]") {
   // f0 = x^2 + y^2 - c, f1 = x - y + c - 2, f2 = x y - 1 over Q[c]: a common root
   // exists for c = 2 (x = y = 1); check the minor's determinant vanishes exactly there.
   using R = Q1;  // polynomials in c
@@ -905,6 +906,32 @@ TEST_CASE("Definition 1: maximal nonsingular minor of a non-square Bezoutian mat
   // Every row/column monomial of the minor is one of the matrix's.
   for (const auto& e : M.row_monomials)
     CHECK(std::find(B.row_monomials.begin(), B.row_monomials.end(), e) != B.row_monomials.end());
+
+  // A rank-deficient Bezoutian matrix: f0 = x^2 - c, f1 = y - x, f2 = y^2 - x y (the roots
+  // x = y = +-sqrt(c) exist for every c). The 4x4 matrix has rank 2.
+  const std::vector<Sparse<R>> h{mono(2, 0, R(1)) + mono(0, 0, -c), mono(0, 1, R(1)) + mono(1, 0, R(-1)),
+                                 mono(0, 2, R(1)) + mono(1, 1, R(-1))};
+  const auto H = bezoutian::bezoutian_matrix(h);
+  REQUIRE(H.rows() == 4);
+  REQUIRE(H.columns() == 4);
+  CHECK(CGAL::is_zero(berkowitz_det(H.entries)));
+  const auto HM = bezoutian::maximal_nonsingular_minor(H);
+  REQUIRE(HM.rows() == 2);
+  REQUIRE(HM.columns() == 2);
+  CHECK(!CGAL::is_zero(berkowitz_det(HM.entries)));
+  // Maximal: every 3x3 minor vanishes identically.
+  for (std::size_t skip_r = 0; skip_r < 4; ++skip_r)
+    for (std::size_t skip_c = 0; skip_c < 4; ++skip_c) {
+      std::vector<std::vector<R>> minor;
+      for (std::size_t i = 0; i < 4; ++i) {
+        if (i == skip_r) continue;
+        std::vector<R> row;
+        for (std::size_t j = 0; j < 4; ++j)
+          if (j != skip_c) row.push_back(H.entries[i][j]);
+        minor.push_back(row);
+      }
+      CHECK(CGAL::is_zero(berkowitz_det(minor)));
+    }
 }
 
 TEST_CASE("Bezoutian matrices reject bad input", "[bezoutian][errors]") {
