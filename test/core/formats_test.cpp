@@ -11,6 +11,7 @@
 
 #include "test_support.h"
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -640,6 +641,41 @@ TEST_CASE("bad .dat and .bpt input: Parse_error at the offending token", "[forma
   const std::string teapot = read_text_file(shared_data("teapot/teapot32.bpt"));
   for (std::size_t cut : {std::size_t(1), std::size_t(5), std::size_t(100), teapot.size() / 2, teapot.rfind('\n', teapot.size() - 2)})
     CHECK_THROWS_AS(read_bpt(teapot.substr(0, cut), "cut.bpt"), Parse_error);
+}
+
+TEST_CASE("mutated inputs: a Parse_error or a valid document, nothing else", "[formats][errors]") {
+  const std::vector<std::pair<std::string, int>> seeds = {
+      {read_text_file(source_file("examples/data/circle_arcs.json")), 0},
+      {read_text_file(source_file("examples/data/bezoutian_worked_example.json")), 0},
+      {"{\"curve\": {\"homogeneous\": true, \"points\": [[1, 0, 0], [0, 1, 2], [2, \"1/3\", 4]]}}", 0},
+      {"2\n5 0 0 100 10 200 20 300 30 400 40\n4 400 40 500 0 600 100 700 200", 1},
+      {"1\n1 1\n0 0 0\n1 0 0.5\n0 1 0\n1 1 1\n", 2}};
+  const std::string alphabet = "{}[]\",:0123456789-+.eE/^*()stuvwxyz \n\\#";
+  std::uint32_t state = 20261122;  // a fixed linear congruential sequence: the same inputs every run
+  auto next = [&]() { return state = state * 1664525u + 1013904223u, state >> 8; };
+  std::size_t parsed = 0, rejected = 0;
+  for (int it = 0; it < 1500; ++it) {
+    const auto& seed = seeds[next() % seeds.size()];
+    std::string s = seed.first;
+    for (int k = 1 + next() % 3; k > 0; --k) {
+      const std::size_t pos = next() % (s.size() + 1);
+      switch (next() % 4) {
+        case 0: if (pos < s.size()) s.erase(pos, 1 + next() % 3); break;
+        case 1: s.insert(pos, 1, alphabet[next() % alphabet.size()]); break;
+        case 2: if (pos < s.size()) s[pos] = alphabet[next() % alphabet.size()]; break;
+        default: s.resize(pos);
+      }
+    }
+    try {
+      const Geometry_document d = seed.second == 0 ? read_json(s) : seed.second == 1 ? read_dat(s) : read_bpt(s);
+      check_same(read_json(write_json(d)), d);
+      ++parsed;
+    } catch (const Parse_error&) {
+      ++rejected;
+    }
+  }
+  CHECK(parsed > 0);
+  CHECK(rejected > 0);
 }
 
 TEST_CASE("files: missing file and unknown extension", "[formats][errors]") {
