@@ -26,6 +26,7 @@
 
 #include <bezoutian/number_types.h>
 #include <bezoutian/internal/modular_arithmetic.h>
+#include <bezoutian/internal/modular_polynomial.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -82,36 +83,6 @@ NT berkowitz_determinant(const std::vector<std::vector<NT>>& M) {
 }
 
 namespace internal {
-
-/// Dense integer polynomial entry sum_{k<=du, l<=dv} c[l*(du+1)+k] u^k v^l;
-/// du = dv = -1 for the zero polynomial.
-struct Dense_polynomial_entry {
-  int du = -1, dv = -1;
-  std::vector<CGAL::Gmpz> c;
-  bool is_zero() const { return du < 0; }
-};
-
-inline Dense_polynomial_entry dense_entry(const Polynomial_2<Integer>& f) {
-  Dense_polynomial_entry e;
-  if (CGAL::is_zero(f)) return e;
-  e.dv = f.degree();
-  e.du = 0;
-  for (int l = 0; l <= e.dv; ++l)
-    if (!CGAL::is_zero(f[l])) e.du = std::max(e.du, f[l].degree());
-  e.c.assign(std::size_t(e.du + 1) * std::size_t(e.dv + 1), CGAL::Gmpz(0));
-  for (int l = 0; l <= e.dv; ++l)
-    for (int k = 0; k <= f[l].degree(); ++k) e.c[std::size_t(l) * (e.du + 1) + k] = f[l][k];
-  return e;
-}
-
-inline Dense_polynomial_entry dense_entry(const Polynomial_1<Integer>& f) {
-  Dense_polynomial_entry e;
-  if (CGAL::is_zero(f)) return e;
-  e.du = f.degree();
-  e.dv = 0;
-  e.c.assign(f.begin(), f.end());
-  return e;
-}
 
 /// Maximum of sum_i w[i][sigma(i)] over the permutations sigma avoiding the
 /// forbidden entries (w < 0), or -1 if every permutation hits one (then the
@@ -218,62 +189,6 @@ inline u64 scaled_determinant_mod_p(u64* a, std::size_t n, const Montgomery_modu
   return negate ? M.neg(det) : det;
 }
 
-/// Values of the polynomial c_0 + c_1 x + ... + c_d x^d (coefficients c[i*cs],
-/// Montgomery residues; d < 0 for the zero polynomial) at x = 0, 1, ..., N-1,
-/// written to out[x*os]. The values at 0..d come from Horner's rule; further
-/// values come from the table of forward differences, whose d-th difference is
-/// constant, so that each further value costs d modular additions.
-inline void tabulate_at_consecutive_integers(const u64* c, std::size_t cs, int d, std::size_t N, u64* out,
-                                             std::size_t os, const Montgomery_modulus& M,
-                                             const std::vector<u64>& node, std::vector<u64>& work) {
-  if (d < 0) {
-    for (std::size_t x = 0; x < N; ++x) out[x * os] = 0;
-    return;
-  }
-  const std::size_t dd = std::size_t(d);
-  const std::size_t m = std::min(dd + 1, N); // points evaluated directly
-  work.resize(dd + 1);
-  for (std::size_t x = 0; x < m; ++x) {
-    u64 y = c[dd * cs];
-    for (std::size_t k = dd; k-- > 0;) y = M.add(M.mul(y, node[x]), c[k * cs]);
-    work[x] = y;
-  }
-  if (N <= dd + 1) {
-    for (std::size_t x = 0; x < N; ++x) out[x * os] = work[x];
-    return;
-  }
-  // work[j] <- j-th forward difference at x = 0.
-  for (std::size_t j = 1; j <= dd; ++j)
-    for (std::size_t i = dd; i >= j; --i) work[i] = M.sub(work[i], work[i - 1]);
-  u64* w = work.data();
-  for (std::size_t x = 0; x < N; ++x) {
-    out[x * os] = w[0];
-    for (std::size_t j = 0; j < dd; ++j) w[j] = M.add(w[j], w[j + 1]);
-  }
-}
-
-/// In place: values f[0], f[s], ..., f[D*s] of a polynomial of degree <= D at
-/// x = 0, 1, ..., D (Montgomery residues) become its coefficients. Newton
-/// divided differences (the nodes x_{i+j} - x_i = j, so level j divides by j)
-/// followed by expansion of the Newton form by Horner's rule.
-inline void interpolate_at_consecutive_integers(u64* f, std::size_t s, std::size_t D, const Montgomery_modulus& M,
-                                                const std::vector<u64>& inv, const std::vector<u64>& node,
-                                                std::vector<u64>& work) {
-  for (std::size_t j = 1; j <= D; ++j)
-    for (std::size_t i = D; i >= j; --i) f[i * s] = M.mul(M.sub(f[i * s], f[(i - 1) * s]), inv[j]);
-  work.assign(D + 1, 0);
-  work[0] = f[D * s];
-  for (std::size_t j = D; j-- > 0;) {
-    // work <- work * (x - j) + f_j, with deg(work) = D - 1 - j before the step.
-    const std::size_t deg = D - 1 - j;
-    const u64 nj = M.neg(node[j]);
-    work[deg + 1] = work[deg];
-    for (std::size_t m = deg; m >= 1; --m) work[m] = M.add(work[m - 1], M.mul(nj, work[m]));
-    work[0] = M.add(M.mul(nj, work[0]), f[j * s]);
-  }
-  for (std::size_t i = 0; i <= D; ++i) f[i * s] = work[i];
-}
-
 /// Coefficients of det A, A an n x n matrix of dense integer polynomials, with
 /// deg_u det <= Du and deg_v det <= Dv and |coefficients| <= sqrt(bound_sq):
 /// returned as an array indexed l*(Du+1)+k for u^k v^l.
@@ -304,7 +219,6 @@ inline std::vector<CGAL::Gmpz> multimodular_determinant(const std::vector<Dense_
 
   for (std::size_t ip = 0; ip < np; ++ip) {
     const Montgomery_modulus M(primes[ip]);
-    const u64 p = M.modulus();
     // Residues of the coefficients, entry e at R[(e*sv + l)*su + k].
     R.assign(nn * sv * su, 0);
     for (std::size_t e = 0; e < nn; ++e) {
@@ -316,18 +230,8 @@ inline std::vector<CGAL::Gmpz> multimodular_determinant(const std::vector<Dense_
           if (!CGAL::is_zero(x)) R[(e * sv + l) * su + k] = M.to_montgomery(x);
         }
     }
-    // Nodes 0..max(Du,Dv), their inverses (inv[j] = -(p div j) inv[p mod j]).
-    const std::size_t D = std::max(Du, Dv);
-    node.assign(D + 1, 0);
-    inv.assign(D + 1, 0);
-    std::vector<u64> plain_inv(D + 1, 0);
-    if (D >= 1) plain_inv[1] = 1;
-    for (std::size_t j = 2; j <= D; ++j)
-      plain_inv[j] = (p - mulmod_u64(p / j, plain_inv[p % j], p)) % p;
-    for (std::size_t j = 0; j <= D; ++j) {
-      node[j] = M.to_montgomery(static_cast<u64>(j));
-      inv[j] = M.to_montgomery(plain_inv[j]);
-    }
+    // Nodes 0..max(Du,Dv) and the inverses of 1..max(Du,Dv).
+    consecutive_nodes(0, std::max(Du, Dv) + 1, M, node, inv);
     // Stage 1: the coefficients c_{e,l}(u) of v^l in entry e, tabulated at u = 0..Du.
     Cu.assign(nn * sv * nu, 0);
     for (std::size_t e = 0; e < nn; ++e)

@@ -14,6 +14,7 @@
 #define BEZOUTIAN_POLYNOMIAL_NORMALIZATION_H
 
 #include <bezoutian/number_types.h>
+#include <bezoutian/internal/modular_square_free.h>
 
 #include <vector>
 
@@ -62,13 +63,30 @@ inline Polynomial_2<Integer> normalized_primitive_part(const Polynomial_2<Intege
 
 /// The square-free part of D over Q (the product of its distinct irreducible
 /// factors, each once, including factors in u alone), normalized as in
-/// `normalized_primitive_part`. Uses CGAL's Make_square_free, which splits off
-/// the content with respect to v and divides the rest by gcd(D, dD/dv).
-/// Returns 0 for D = 0 and 1 for a nonzero constant.
+/// `normalized_primitive_part`. Returns 0 for D = 0 and 1 for a nonzero
+/// constant.
+///
+/// D = c(u) P(u,v) with c the content with respect to v; the square-free part
+/// is that of c (univariate, CGAL) times that of P. P is usually square-free,
+/// which one specialization modulo a prime proves; otherwise a modular
+/// algorithm with exact certification is used
+/// (internal::square_free_part_of_primitive). CGAL's bivariate
+/// Make_square_free gives the same answer but is orders of magnitude slower on
+/// implicit equations of bi-degree (24,24) and above.
 inline Polynomial_2<Integer> normalized_square_free_part(const Polynomial_2<Integer>& D) {
   if (CGAL::is_zero(D)) return D;
-  typename CGAL::Polynomial_traits_d<Polynomial_2<Integer>>::Make_square_free make_square_free;
-  return normalized_primitive_part(make_square_free(D));
+  const Polynomial_1<Integer> c = internal::v_content(D);
+  Polynomial_2<Integer> P = normalized_primitive_part(c.degree() > 0 ? internal::divide_v_coefficients(D, c) : D);
+  if (P.degree() == 0) {
+    P = Polynomial_2<Integer>(1);
+  } else if (!internal::specialization_proves_no_repeated_v_factor(internal::dense_entry(P))) {
+    P = internal::square_free_part_of_primitive(P);
+  }
+  if (c.degree() > 0) {
+    typename CGAL::Polynomial_traits_d<Polynomial_1<Integer>>::Make_square_free make_square_free;
+    P *= Polynomial_2<Integer>(make_square_free(c));
+  }
+  return normalized_primitive_part(P);
 }
 
 /// Functor forms.

@@ -328,6 +328,7 @@ TEST_CASE("normalization: primitive part and sign convention", "[determinant][no
 }
 
 TEST_CASE("normalization: square-free part", "[determinant][normalization]") {
+  using Square_free = CGAL::Polynomial_traits_d<P2>::Make_square_free;
   const P2 f = U * V - 2 * V + 3;           // irreducible
   const P2 g = V * V + U * U * U - 7 * U;    // irreducible, coprime to f
   const P2 a = U + 1;                       // factor in u alone (content with respect to v)
@@ -338,4 +339,51 @@ TEST_CASE("normalization: square-free part", "[determinant][normalization]") {
   CHECK(bezoutian::normalized_square_free_part(g) == bezoutian::normalized_primitive_part(g));
   CHECK(bezoutian::normalized_square_free_part(P2(5)) == P2(1));
   CHECK(CGAL::is_zero(bezoutian::normalized_square_free_part(P2(0))));
+  // Leading coefficient in v with repeated factors and integer roots 0, 1, 2
+  // (the evaluation windows must avoid them); multiplicities 3 and 2.
+  const P2 h = U * (U - 1) * (U - 1) * (U - 2) * V * V + 5 * V - U + 4;
+  CHECK(bezoutian::normalized_square_free_part(f * f * f * h * h) == bezoutian::normalized_primitive_part(f * h));
+  CHECK(bezoutian::normalized_square_free_part(h * h * g) == bezoutian::normalized_primitive_part(h * g));
+  // Cross-check with CGAL's own Make_square_free on random products (small, CGAL is slow).
+  Random rnd(20260108);
+  for (int trial = 0; trial < 4; ++trial) {
+    const P2 p = rnd.poly2(2, 1, 4) + V * V, q = rnd.poly2(1, 2, 4), r = rnd.poly2(1, 1, 3);
+    const P2 D = p * p * q * (trial % 2 ? r * r * r : r);
+    CHECK(bezoutian::normalized_square_free_part(D) == bezoutian::normalized_primitive_part(Square_free()(D)));
+  }
+}
+
+TEST_CASE("normalization: square-free part of determinants", "[determinant][normalization]") {
+  // A determinant (bi-degree (12,12)), its square times a factor in u, and a
+  // matrix whose determinant is a square by construction: det(A) det(A) = det(diag(A, A)).
+  Random rnd(20260109);
+  Matrix<P2> A(4, std::vector<P2>(4));
+  for (auto& row : A)
+    for (auto& e : row) e = rnd.poly2(3, 3, 50);
+  const P2 D = bezoutian::polynomial_matrix_determinant(A);
+  const P2 pD = bezoutian::normalized_primitive_part(D);
+  CHECK(bezoutian::normalized_square_free_part(D) == pD);
+  CHECK(bezoutian::normalized_square_free_part(D * D * (U * U - 4) * (U * U - 4)) ==
+        bezoutian::normalized_primitive_part(D * (U * U - 4)));
+  Matrix<P2> AA(8, std::vector<P2>(8, P2(0)));
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) AA[i][j] = AA[4 + i][4 + j] = A[i][j];
+  const P2 D2 = bezoutian::polynomial_matrix_determinant(AA);
+  CHECK(D2 == D * D);
+  CHECK(bezoutian::normalized_square_free_part(D2) == pD);
+}
+
+TEST_CASE("exact division in Z[u][v]", "[determinant][normalization]") {
+  using namespace bezoutian::internal;
+  Random rnd(20260110);
+  const P2 a = rnd.poly2(4, 3, 1000) + V * V * V * V, b = rnd.poly2(3, 5, 1000) + V * V * V * V * V * V;
+  Dense_polynomial_entry Q;
+  REQUIRE(exact_quotient(dense_entry(a * b), dense_entry(b), Q));
+  CHECK(to_polynomial_2(Q) == a);
+  CHECK(!exact_quotient(dense_entry(a * b + 1), dense_entry(b), Q));
+  CHECK(!exact_quotient(dense_entry(a * b + U * V), dense_entry(b), Q));
+  CHECK(!exact_quotient(dense_entry(a), dense_entry(b), Q)); // degree too small
+  // Divisible over Q but not over Z is impossible for primitive divisors; 3a/(b) with b primitive:
+  REQUIRE(exact_quotient(dense_entry(P2(3) * a * b), dense_entry(b), Q));
+  CHECK(to_polynomial_2(Q) == P2(3) * a);
 }

@@ -241,6 +241,54 @@ private:
   mutable std::vector<u64> digits_;
 };
 
+/// Chinese remaindering one prime at a time, for algorithms that stop when
+/// the result is certified a posteriori. The values are kept as symmetric
+/// representatives x_i, |x_i| <= P/2: with a new prime p,
+/// x <- x + P d, d = (r - x) P^{-1} mod p taken in (-p/2, p/2), so that the
+/// result is again symmetric modulo P p, and unchanged iff r = x mod p.
+class Incremental_chinese_remainder {
+public:
+  explicit Incremental_chinese_remainder(std::size_t count = 0) : values_(count), P_(1) {}
+
+  std::size_t size() const { return values_.size(); }
+  std::size_t number_of_primes() const { return primes_; }
+  const CGAL::Gmpz& product() const { return P_; }
+
+  /// Adds the plain residues r[0..size) modulo the prime p (not yet used).
+  /// Returns true if no value changed (the reconstruction is stable).
+  bool add(u64 p, const std::vector<u64>& r) {
+    const Montgomery_modulus M(p);
+    const u64 inv_P = M.inverse(M.to_montgomery(P_));
+    bool stable = true;
+    for (std::size_t i = 0; i < values_.size(); ++i) {
+      const u64 x = M.to_montgomery(values_[i]);
+      const u64 d = M.from_montgomery(M.mul(M.sub(M.to_montgomery(r[i]), x), inv_P));
+      if (d == 0) continue;
+      stable = false;
+      CGAL::Gmpz t; // fresh object: CGAL::Gmpz copies share their mpz_t
+      if (d > p / 2) {
+        t = Montgomery_modulus::gmpz_from_u64(p - d);
+        mpz_neg(t.mpz(), t.mpz());
+      } else {
+        t = Montgomery_modulus::gmpz_from_u64(d);
+      }
+      mpz_mul(t.mpz(), t.mpz(), P_.mpz());
+      values_[i] += t;
+    }
+    P_ *= Montgomery_modulus::gmpz_from_u64(p);
+    ++primes_;
+    return stable;
+  }
+
+  /// The representative of value i, of absolute value at most P/2.
+  const CGAL::Gmpz& symmetric(std::size_t i) const { return values_[i]; }
+
+private:
+  std::vector<CGAL::Gmpz> values_;
+  CGAL::Gmpz P_;
+  std::size_t primes_ = 0;
+};
+
 } // namespace internal
 } // namespace bezoutian
 
