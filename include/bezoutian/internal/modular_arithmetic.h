@@ -27,8 +27,9 @@ using u128 = unsigned __int128;
 
 /// Arithmetic modulo an odd prime p < 2^62 in Montgomery form (R = 2^64):
 /// a residue x is stored as x*R mod p, so that a product needs two word
-/// multiplications and no division. Because p < 2^62, sums of products can be
-/// accumulated lazily in 128 bits (see `Lazy_sum`) and reduced once.
+/// multiplications and no division. Because p < 2^62, a sum of two products
+/// (as in a step of Gaussian elimination) is < 2p^2 < p 2^64 and needs a
+/// single reduction.
 class Montgomery_modulus {
 public:
   explicit Montgomery_modulus(u64 p) : p_(p) {
@@ -98,25 +99,6 @@ public:
 
 private:
   u64 p_, neg_inv_, r_mod_, r2_mod_;
-};
-
-/// A sum of products of Montgomery residues kept in 128 bits below p*2^64 and
-/// reduced once at the end: each product is < p^2 < p*2^64, so after an
-/// addition the sum is < 2p*2^64 < 2^127 and one conditional subtraction of
-/// p*2^64 restores the invariant.
-class Lazy_sum {
-public:
-  explicit Lazy_sum(const Montgomery_modulus& m) : p_hi_(static_cast<u128>(m.modulus()) << 64) {}
-  void add_product(u64 a, u64 b) {
-    s_ += static_cast<u128>(a) * b;
-    if (s_ >= p_hi_) s_ -= p_hi_;
-  }
-  u128 value() const { return s_; }
-  void clear() { s_ = 0; }
-
-private:
-  u128 p_hi_;
-  u128 s_ = 0;
 };
 
 /// (a*b) mod m by 128-bit division; used only by the primality test.
