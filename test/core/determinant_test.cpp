@@ -148,6 +148,13 @@ TEST_CASE("determinant: Sylvester matrices give CGAL's resultant", "[determinant
     const P2 f = rnd.poly2(3, int(rnd.integer(2, 4)), 7), g = rnd.poly2(2, int(rnd.integer(2, 4)), 7);
     CHECK(bezoutian::polynomial_matrix_determinant(sylvester(f, g)) == CGAL::resultant(f, g));
   }
+  // 19x19 Sylvester matrix: above 16 rows the degree bound comes from row/column maxima.
+  {
+    const P2 f = rnd.poly2(3, 10, 9), g = rnd.poly2(2, 9, 9);
+    const Matrix<P1> S = sylvester(f, g);
+    REQUIRE(S.size() == 19);
+    CHECK(bezoutian::polynomial_matrix_determinant(S) == CGAL::resultant(f, g));
+  }
   // Bivariate entries: f, g in Z[u,v][w].
   using P3 = CGAL::Polynomial<P2>;
   for (int trial = 0; trial < 2; ++trial) {
