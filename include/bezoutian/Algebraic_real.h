@@ -14,6 +14,7 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include <algorithm>
 #include <memory>
 #include <ostream>
 #include <stdexcept>
@@ -156,6 +157,7 @@ class Algebraic_real {
     Rep& a = *rep_;
     Rep& b = *other.rep_;
     bool gcd_done = false;
+    unsigned long extra_bits = 16;
     for (int round = 0;; ++round) {
       if (a.exact) return -other.compare(a.lo);
       if (b.exact) return compare(b.lo);
@@ -198,9 +200,16 @@ class Algebraic_real {
           }
         }
       }
-      const Rational m = (a.lo + a.hi) / 2;
-      a.locate(m);
-      if (!a.exact) b.locate(m);
+      if (!gcd_done) {  // bisect the common interval
+        const Rational m = (a.lo + a.hi) / 2;
+        a.locate(m);
+        if (!a.exact) b.locate(m);
+      } else {  // known to differ: quadratic refinement, doubling the bits gained
+        const Rational w = shrunk_width(a.hi - a.lo, extra_bits);
+        extra_bits = std::min<unsigned long>(2 * extra_bits, 1UL << 20);
+        a.refine_to_width(w);
+        b.refine_to_width(w);
+      }
     }
   }
 
@@ -228,6 +237,7 @@ class Algebraic_real {
     Rep& r = *rep_;
     if (F.degree() == 0 || r.exact) return internal::sign_at(fc, r.lo);
     bool gcd_done = false;
+    unsigned long extra_bits = 8;
     for (int round = 0;; ++round) {
       if (r.exact) return internal::sign_at(fc, r.lo);
       const int s = interval_sign(F, r.lo, r.hi);
@@ -251,8 +261,13 @@ class Algebraic_real {
           for (const internal::Mpz& x : bern)
             if (x.sign() != 0) return x.sign();
       }
-      r.bisect();
-      r.bisect();
+      if (!gcd_done) {
+        r.bisect();
+        r.bisect();
+      } else {
+        r.refine_to_width(shrunk_width(r.hi - r.lo, extra_bits));
+        extra_bits = std::min<unsigned long>(2 * extra_bits, 1UL << 20);
+      }
     }
   }
 
@@ -434,6 +449,13 @@ class Algebraic_real {
     }
     if (!found) throw Invalid_input("Algebraic_real: no root in the interval");
     rep_->resolve_rationality();
+  }
+
+  // w / 2^bits as a fresh object.
+  static Rational shrunk_width(const Rational& w, unsigned long bits) {
+    Rational r;
+    mpq_div_2exp(r.mpq(), w.mpq(), static_cast<mp_bitcnt_t>(bits));
+    return r;
   }
 
   // Sign of F on [lo,hi] by interval Horner evaluation (0: undecided).

@@ -429,6 +429,12 @@ TEST_CASE("Algebraic_real: exact comparisons", "[algebraic_real]") {
   const Algebraic_real e(P(-(Integer(2) * e30 + Integer(1)), Integer(0), e30), Q(1), Q(2));
   CHECK(a < e);
   CHECK(e > b);
+  // 10^-100 apart: separated by quadratic refinement after the gcd test
+  const Integer e100 = CGAL::ipower(Integer(10), 100);
+  const Algebraic_real f(P(-(Integer(2) * e100 + Integer(1)), Integer(0), e100), Q(1), Q(2));
+  CHECK(f.compare(a) == 1);
+  CHECK(f.compare(e) == -1);
+  CHECK(f.upper() - f.lower() < Rational(Integer(1), e100));
   // rational strictly between
   const Rational m = a.rational_between(e);
   CHECK(a.compare(m) < 0);
