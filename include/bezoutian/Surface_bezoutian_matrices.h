@@ -294,12 +294,15 @@ inline Bezoutian_matrix self_intersection_matrix(const std::array<Polynomial_2<R
 /// det B(u, t) is the equation of the projection onto (u, t) of the intersection
 /// curve of the parameter spaces, up to a constant factor.
 /// Throws Invalid_input as self_intersection_matrix does.
-inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Rational>, 4>& phi,
-                                            const std::array<Polynomial_2<Rational>, 4>& psi, int m, int n,
+inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Rational>, 4>& phi, int m1, int n1,
+                                            const std::array<Polynomial_2<Rational>, 4>& psi, int m2, int n2,
                                             Bezoutian_formula formula = Bezoutian_formula::automatic) {
+  // Only the degree n = n1 of Phi in v and m = m2 of Psi in s shape the matrix (Theorem 7 with x = v, y = s);
+  // the degrees of Phi in u and of Psi in t are free (they are the parameters of the projection).
   const char* what = "intersection_matrix";
-  auto gphi = internal::patch_grids(phi, m, n, what);
-  auto gpsi = internal::patch_grids(psi, m, n, what);
+  auto gphi = internal::patch_grids(phi, m1, n1, what);
+  auto gpsi = internal::patch_grids(psi, m2, n2, what);
+  const int n = n1, m = m2;
   Rational w_phi, w_psi;
   const bool constant_weights = internal::is_constant(phi[0], w_phi) && internal::is_constant(psi[0], w_psi);
   if (formula == Bezoutian_formula::automatic)
@@ -317,8 +320,8 @@ inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Ration
       Integer L;
       const auto z = internal::clear_denominators({&gphi[i + 1], &gpsi[i + 1]}, L);
       factor /= Rational(L);
-      f[i] = internal::coefficients_in_v(z[0], m, n);
-      gs[i] = internal::coefficients_in_s(z[1], m, n);
+      f[i] = internal::coefficients_in_v(z[0], m1, n1);
+      gs[i] = internal::coefficients_in_s(z[1], m2, n2);
     }
     return internal::to_surface_matrix(dense_separated_bezoutian_matrix(f, gs, n, m), factor, {"u", "t"},
                                        {"s", "v"}, Bezoutian_formula::polynomial);
@@ -330,11 +333,18 @@ inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Ration
     Integer L;
     const auto z = internal::clear_denominators({&gphi[i], &gpsi[i]}, L);
     factor /= Rational(L);
-    f[i] = internal::coefficients_in_v(z[0], m, n);
-    gs[i] = internal::coefficients_in_s(z[1], m, n);
+    f[i] = internal::coefficients_in_v(z[0], m1, n1);
+    gs[i] = internal::coefficients_in_s(z[1], m2, n2);
   }
   return internal::to_surface_matrix(dense_determinantal_bezoutian_matrix(f, gs, n, m), factor, {"u", "t"},
                                      {"s", "v"}, Bezoutian_formula::rational);
+}
+
+/// Both patches of bi-degree (m, n): the mn x mn matrix of Theorems 2 and 3.
+inline Bezoutian_matrix intersection_matrix(const std::array<Polynomial_2<Rational>, 4>& phi,
+                                            const std::array<Polynomial_2<Rational>, 4>& psi, int m, int n,
+                                            Bezoutian_formula formula = Bezoutian_formula::automatic) {
+  return intersection_matrix(phi, m, n, psi, m, n, formula);
 }
 
 } // namespace bezoutian
