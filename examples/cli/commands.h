@@ -19,3 +19,24 @@ struct Register {
 } // namespace bezoutian_cli
 
 #endif
+
+#include <string>
+
+namespace bezoutian_cli {
+
+/// Options shared by `bezoutian intersect` for curves and patches.
+struct Intersect_options {
+  std::string file_a, file_b;
+  std::string method = "default";   // curves: projection | resolvent | groebner | default
+  std::string box;                  // patches: u0,u1,v0,v1 region of interest
+  std::string svg, obj;             // patches: pictures
+  double tolerance = 1e-3;          // patches: polyline tolerance
+  bool json = false;
+};
+
+/// Curve/curve and curve/patch intersection (examples/cli/curve_intersect.cpp).
+void run_curve_intersect(const Intersect_options& o);
+/// Patch/patch intersection (examples/cli/surface_commands.cpp).
+void run_patch_intersect(const Intersect_options& o);
+
+} // namespace bezoutian_cli

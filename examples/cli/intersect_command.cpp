@@ -1,0 +1,40 @@
+// bezoutian intersect FILE_A FILE_B: dispatches on what the files hold (curves, or patches).
+#include "commands.h"
+
+#include <bezoutian/io/Geometry_document.h>
+
+#include <memory>
+
+namespace {
+
+bezoutian_cli::Register intersect_registration([](CLI::App& app) {
+  auto o = std::make_shared<bezoutian_cli::Intersect_options>();
+  auto* sub = app.add_subcommand("intersect",
+                                 "Certified intersection of two curves, a curve and a patch, or two patches");
+  sub->add_option("FILE_A", o->file_a, "first object (the first curve or patch of the file)")->required();
+  sub->add_option("FILE_B", o->file_b, "second object (default: the second object of FILE_A)");
+  sub->add_option("--method", o->method, "curves: projection | resolvent | groebner | default")
+      ->check(CLI::IsMember({"projection", "resolvent", "groebner", "default"}));
+  sub->add_option("--box", o->box, "patches: region of interest u0,u1,v0,v1 of the (u,t) projection");
+  sub->add_option("--svg", o->svg, "patches: write a picture of the parameter-space curves");
+  sub->add_option("--obj", o->obj, "patches: write the patches and the 3D curves as OBJ");
+  sub->add_option("--tolerance", o->tolerance, "patches: polyline tolerance");
+  sub->add_flag("--json", o->json, "machine-readable output");
+  sub->callback([o] {
+    // Patches on both sides: surface/surface; anything else: the curve engine.
+    auto a = bezoutian::io::read_geometry_file(o->file_a);
+    bool patches = !a.patches.empty() && a.curves_2.empty() && a.curves_3.empty();
+    if (!o->file_b.empty()) {
+      auto b = bezoutian::io::read_geometry_file(o->file_b);
+      patches = patches && !b.patches.empty();
+    } else {
+      patches = patches && a.patches.size() >= 2;
+    }
+    if (patches)
+      bezoutian_cli::run_patch_intersect(*o);
+    else
+      bezoutian_cli::run_curve_intersect(*o);
+  });
+});
+
+} // namespace
