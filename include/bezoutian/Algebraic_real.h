@@ -191,8 +191,8 @@ class Algebraic_real {
         if (h.degree() >= 1) {
           // h divides both defining polynomials, so it has at most one root in
           // I, which is then both numbers; equality iff h changes sign on I.
-          internal::Mpz_vector hc = internal::coefficients_of(h);
-          const int sl = internal::sign_at(hc, a.lo), sh = internal::sign_at(hc, a.hi);
+          auto hc = std::make_shared<const internal::Mpz_vector>(internal::coefficients_of(h));
+          const int sl = internal::sign_at(*hc, a.lo), sh = internal::sign_at(*hc, a.hi);
           if (sl != 0 && sh != 0 && sl != sh) {
             a.set_interval(h, hc, a.lo, a.hi, sl);
             b.set_interval(h, hc, a.lo, a.hi, sl);
@@ -307,13 +307,13 @@ class Algebraic_real {
   Algebraic_real negated() const {
     const Rep& r = *rep_;
     if (r.exact) return Algebraic_real(Rational(-r.lo));
-    internal::Mpz_vector c = r.c;
-    for (std::size_t i = 1; i < c.size(); i += 2) mpz_neg(c[i].get(), c[i].get());
-    if (c.back().sign() < 0)
-      for (internal::Mpz& x : c) mpz_neg(x.get(), x.get());
+    auto c = std::make_shared<internal::Mpz_vector>(*r.c);
+    for (std::size_t i = 1; i < c->size(); i += 2) mpz_neg((*c)[i].get(), (*c)[i].get());
+    if (c->back().sign() < 0)
+      for (internal::Mpz& x : *c) mpz_neg(x.get(), x.get());
     const Rational lo = -r.hi;
     Algebraic_real res;
-    res.rep_->set_interval(internal::polynomial_of(c), c, lo, -r.lo, internal::sign_at(c, lo));
+    res.rep_->set_interval(internal::polynomial_of(*c), c, lo, -r.lo, internal::sign_at(*c, lo));
     return res;
   }
 
@@ -322,7 +322,7 @@ class Algebraic_real {
 
   struct Rep {
     Polynomial_1<Integer> poly;  // canonical square-free defining polynomial
-    internal::Mpz_vector c;      // its coefficients
+    std::shared_ptr<const internal::Mpz_vector> c;  // its coefficients (shared by roots of one polynomial)
     Rational lo, hi;             // lo == hi == value when exact
     int sign_lo = 0;             // sign of poly at lo (nonzero unless exact)
     bool exact = true;
@@ -330,15 +330,15 @@ class Algebraic_real {
     void set_exact(const Rational& q) {
       std::vector<Integer> v{Integer(mpq_numref(q.mpq())) * Integer(-1), Integer(mpq_denref(q.mpq()))};
       poly = Polynomial_1<Integer>(v.begin(), v.end());
-      c = internal::coefficients_of(poly);
+      c = std::make_shared<const internal::Mpz_vector>(internal::coefficients_of(poly));
       lo = hi = q;
       sign_lo = 0;
       exact = true;
     }
-    void set_interval(const Polynomial_1<Integer>& p, const internal::Mpz_vector& pc, const Rational& l,
+    void set_interval(const Polynomial_1<Integer>& p, std::shared_ptr<const internal::Mpz_vector> pc, const Rational& l,
                       const Rational& h, int s_lo) {
       poly = p;
-      c = pc;
+      c = std::move(pc);
       lo = l;
       hi = h;
       sign_lo = s_lo;
@@ -347,7 +347,7 @@ class Algebraic_real {
     // For lo < m < hi: +1 if the root is > m, -1 if < m, 0 if it is m
     // (then the number becomes exact); the interval shrinks accordingly.
     int locate(const Rational& m) {
-      const int s = internal::sign_at(c, m);
+      const int s = internal::sign_at(*c, m);
       if (s == 0) { set_exact(m); return 0; }
       if (s == sign_lo) { lo = m; return 1; }
       hi = m;
@@ -366,14 +366,14 @@ class Algebraic_real {
       const long k = static_cast<long>(mpz_sizeinbase(mpq_denref(w.mpq()), 2)) -
                      static_cast<long>(mpz_sizeinbase(mpq_numref(w.mpq()), 2)) + 2;  // 2^(1-k) <= w
       if (k < 1) return false;
-      const Rational x = internal::newton_approximation(c, lo, hi, sign_lo, static_cast<unsigned long>(k + 2));
+      const Rational x = internal::newton_approximation(*c, lo, hi, sign_lo, static_cast<unsigned long>(k + 2));
       Rational delta(1);
       mpz_mul_2exp(mpq_denref(delta.mpq()), mpq_denref(delta.mpq()), static_cast<mp_bitcnt_t>(k));
       Rational l = x - delta, h = x + delta;
       int sl, sh;
-      if (l <= lo) { l = lo; sl = sign_lo; } else sl = internal::sign_at(c, l);
+      if (l <= lo) { l = lo; sl = sign_lo; } else sl = internal::sign_at(*c, l);
       if (sl == 0) { set_exact(l); return true; }
-      if (h >= hi) { h = hi; sh = -sign_lo; } else sh = internal::sign_at(c, h);
+      if (h >= hi) { h = hi; sh = -sign_lo; } else sh = internal::sign_at(*c, h);
       if (sh == 0) { set_exact(h); return true; }
       if (sl == sign_lo && sh != sign_lo) { lo = l; hi = h; return true; }
       if (sl != sign_lo) hi = l;  // root in (lo, l)
@@ -402,7 +402,7 @@ class Algebraic_real {
     // denominators are found after little refinement.
     void resolve_rationality(bool modular_test_done = false) {
       if (exact) return;
-      if (!modular_test_done && internal::has_no_rational_root_modular(c)) return;
+      if (!modular_test_done && internal::has_no_rational_root_modular(*c)) return;
       const Integer Q = CGAL::abs(poly.lcoeff());
       const std::size_t qbits = mpz_sizeinbase(Q.mpz(), 2);
       for (std::size_t bits = 8;; bits *= 2) {
@@ -444,7 +444,7 @@ class Algebraic_real {
         found = true;
         if (iv.exact) rep_->set_exact(iv.lo);
         else if (fm.first.degree() == 1) rep_->set_exact(Rational(-fm.first[0], fm.first[1]));
-        else rep_->set_interval(fm.first, g, iv.lo, iv.hi, iv.sign_lo);
+        else rep_->set_interval(fm.first, std::make_shared<const internal::Mpz_vector>(g), iv.lo, iv.hi, iv.sign_lo);
       }
     }
     if (!found) throw Invalid_input("Algebraic_real: no root in the interval");
@@ -475,7 +475,8 @@ class Algebraic_real {
 namespace internal {
 /// Construction without checks, for the root isolation functions.
 struct Algebraic_real_access {
-  static Algebraic_real from_interval(const Polynomial_1<Integer>& canonical_square_free, const Mpz_vector& c,
+  static Algebraic_real from_interval(const Polynomial_1<Integer>& canonical_square_free,
+                                      std::shared_ptr<const Mpz_vector> c,
                                       const Rational& lo, const Rational& hi, int sign_lo) {
     Algebraic_real a;
     a.rep_->set_interval(canonical_square_free, c, lo, hi, sign_lo);

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -63,7 +64,8 @@ inline void divide_by_linear_factor(Mpz_vector& h, const Rational& r) {
 // polynomial so that the test can succeed for the remaining ones.
 inline void isolate_factor(const Polynomial_1<Integer>& g, int multiplicity, const Rational& a, const Rational& b,
                            std::vector<Isolated_root>& out) {
-  const Mpz_vector c = coefficients_of(g);
+  const auto cp = std::make_shared<const Mpz_vector>(coefficients_of(g));
+  const Mpz_vector& c = *cp;
   const std::vector<Rational_isolating_interval> ivs = isolate_square_free(c, a, b);
   Mpz_vector h;  // g without the rational roots found so far
   bool tested = false, no_rational = false;
@@ -78,7 +80,7 @@ inline void isolate_factor(const Polynomial_1<Integer>& g, int multiplicity, con
       out.push_back({Algebraic_real(iv.lo), multiplicity});
       continue;
     }
-    Algebraic_real x = Algebraic_real_access::from_interval(g, c, iv.lo, iv.hi, iv.sign_lo);
+    Algebraic_real x = Algebraic_real_access::from_interval(g, cp, iv.lo, iv.hi, iv.sign_lo);
     if (!tested) {
       if (h.empty()) h = c;
       no_rational = h.size() < 3 ? h.size() < 2 : has_no_rational_root_modular(h);

@@ -100,9 +100,12 @@ inline Mpz_vector map_to_unit_interval(const Mpz_vector& g, const Rational& a, c
   return H;
 }
 
-/// Exact sign of the integer polynomial c at the rational x.
+/// Exact sign of the integer polynomial c at the rational x (shifts instead
+/// of products when the denominator is a power of two).
 inline int sign_at(const Mpz_vector& c, const Rational& x) {
-  return sign_at(c, mpq_numref(x.mpq()), mpq_denref(x.mpq()));
+  mpz_srcptr den = mpq_denref(x.mpq());
+  if (mpz_popcount(den) == 1) return sign_at_dyadic(c, mpq_numref(x.mpq()), mpz_sizeinbase(den, 2) - 1);
+  return sign_at(c, mpq_numref(x.mpq()), den);
 }
 
 /// The rational a + (b - a) k / 2^d.
