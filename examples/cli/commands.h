@@ -30,7 +30,7 @@ struct Intersect_options {
   std::string method = "default";   // curves: projection | resolvent | groebner | default
   std::string box;                  // patches: u0,u1,v0,v1 region of interest
   std::string svg, obj;             // patches: pictures
-  double tolerance = 1e-3;          // patches: polyline tolerance
+  double tolerance = 1e-9;          // patches: precision of traced ordinates
   bool json = false;
 };
 

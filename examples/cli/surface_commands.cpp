@@ -1,10 +1,269 @@
-// Patch/patch intersection and self-intersection for the command-line tool (placeholder).
+// bezoutian self-intersect FILE and bezoutian intersect PATCH_A PATCH_B: the locus with its certified topology,
+// lifted to the partner parameters, as text, JSON, SVG and OBJ.
 #include "commands.h"
+#include "load.h"
 
-#include <bezoutian/Error.h>
+#include <bezoutian/Surface_intersection.h>
+#include <bezoutian/io/Exact_number.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
 
 namespace bezoutian_cli {
-void run_patch_intersect(const Intersect_options&) {
-  throw bezoutian::Error("surface/surface intersection is not available in this build yet");
+namespace {
+
+using bezoutian::Rational;
+using Patch = bezoutian::Rational_bezier_patch<Rational>;
+
+bezoutian::Parameter_box parse_box(const std::string& text, const char* what) {
+  bezoutian::Parameter_box b;
+  if (text.empty()) return b;
+  std::vector<Rational> v;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) v.push_back(bezoutian::io::exact_number(item));
+  if (v.size() != 4 || !(v[0] < v[1]) || !(v[2] < v[3]))
+    throw bezoutian::Invalid_input(std::string(what) + " must be u0,u1,v0,v1 with u0 < u1 and v0 < v1, got '" + text + "'");
+  b.u0 = v[0], b.u1 = v[1], b.v0 = v[2], b.v1 = v[3];
+  return b;
 }
+
+Patch patch_of(const std::string& path, std::size_t index) {
+  Loaded_file f = load_and_validate(path);
+  for (const auto& w : f.warnings) std::cerr << "warning: " << w << "\n";
+  if (f.doc.patches.size() <= index)
+    throw bezoutian::Invalid_input(path + ": expected at least " + std::to_string(index + 1) + " patch(es), found " +
+                                   std::to_string(f.doc.patches.size()));
+  return f.doc.patches[index];
+}
+
+std::string text(const bezoutian::Integer& z) {
+  std::ostringstream s;
+  s << z;
+  return s.str();
+}
+
+nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
+  using nlohmann::json;
+  json j;
+  j["matrix_size"] = L.equation.matrix.size();
+  json terms = json::array();
+  for (const auto& t : L.equation.terms()) terms.push_back({std::get<0>(t), std::get<1>(t), text(std::get<2>(t))});
+  j["implicit"] = {{"variables", {L.equation.variables[0], L.equation.variables[1]}},
+                   {"bidegree", {L.equation.degree(0), L.equation.degree(1)}},
+                   {"total_degree", L.equation.total_degree()},
+                   {"terms", terms}};
+  const auto& T = L.topology;
+  j["box"] = {CGAL::to_double(T.box.u0), CGAL::to_double(T.box.u1), CGAL::to_double(T.box.v0), CGAL::to_double(T.box.v1)};
+  json comps = json::array();
+  for (const auto& c : T.components) {
+    json jc;
+    jc["closed"] = c.closed;
+    jc["isolated_point"] = c.isolated_point;
+    json pts = json::array(), partner = json::array(), p3 = json::array(), genuine = json::array(), arcs = json::array();
+    for (std::size_t ei : c.edges) {
+      const auto& arc = L.arcs[ei];
+      arcs.push_back({{"from", pts.size()}, {"count", arc.points.size()}});
+      for (const auto& q : arc.points) {
+        pts.push_back({q.projection[0], q.projection[1]});
+        partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
+        p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
+        genuine.push_back(q.genuine);
+      }
+    }
+    if (c.isolated_point && !c.vertices.empty()) {
+      const auto& v = T.vertices[c.vertices[0]];
+      pts.push_back({v.u, v.v});
+    }
+    jc["points"] = pts;
+    jc["arcs"] = arcs;
+    jc["partner_points"] = partner;
+    jc["points_3d"] = p3;
+    jc["genuine"] = genuine;
+    comps.push_back(jc);
+  }
+  j["components"] = comps;
+  json sing = json::array(), bnd = json::array();
+  for (const auto& v : T.vertices) {
+    json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
+               {"branches", v.branches}};
+    if (v.kind == bezoutian::Curve_topology_vertex::singular) sing.push_back(jv);
+    if (v.on_boundary) bnd.push_back(jv);
+  }
+  j["singular_points"] = sing;
+  j["boundary_points"] = bnd;
+  j["partner_variables"] = L.self_intersection ? json{"l", "k"} : json{"v", "s"};
+  j["lifting"] = "floating point along certified arcs (see doc/surface_intersection.md)";
+  j["seconds"] = seconds;
+  return j;
+}
+
+void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
+  const auto& B = L.topology.box;
+  const double u0 = CGAL::to_double(B.u0), u1 = CGAL::to_double(B.u1), v0 = CGAL::to_double(B.v0),
+               v1 = CGAL::to_double(B.v1);
+  const double W = 640, H = 640, pad = 40;
+  auto X = [&](double u) { return pad + (u - u0) / (u1 - u0) * (W - 2 * pad); };
+  auto Y = [&](double v) { return H - pad - (v - v0) / (v1 - v0) * (H - 2 * pad); };
+  std::ofstream s(path);
+  if (!s) throw bezoutian::Error("cannot write " + path);
+  s << "<svg xmlns='http://www.w3.org/2000/svg' width='" << W << "' height='" << H << "' viewBox='0 0 " << W << " " << H
+    << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  s << "<rect x='" << X(u0) << "' y='" << Y(v1) << "' width='" << X(u1) - X(u0) << "' height='" << Y(v0) - Y(v1)
+    << "' fill='none' stroke='black'/>\n";
+  s << "<text x='" << pad << "' y='" << pad - 12 << "' font-size='11' font-family='sans-serif'>"
+    << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
+    << "," << u1 << "]x[" << v0 << "," << v1 << "]; dashed grey: phantom</text>\n";
+  const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
+  for (std::size_t ci = 0; ci < L.topology.components.size(); ++ci) {
+    for (std::size_t ei : L.topology.components[ci].edges) {
+      const auto& pts = L.arcs[ei].points;
+      for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+        const bool g = pts[i].genuine && pts[i + 1].genuine;
+        s << "<line x1='" << X(pts[i].projection[0]) << "' y1='" << Y(pts[i].projection[1]) << "' x2='"
+          << X(pts[i + 1].projection[0]) << "' y2='" << Y(pts[i + 1].projection[1]) << "' stroke='"
+          << (g ? colours[ci % 8] : "#999999") << "' stroke-width='" << (g ? 2.5 : 1.2) << "'"
+          << (g ? "" : " stroke-dasharray='4,3'") << "/>\n";
+      }
+    }
+  }
+  for (const auto& v : L.topology.vertices) {
+    if (v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated)
+      s << "<circle cx='" << X(v.u) << "' cy='" << Y(v.v) << "' r='6' fill='none' stroke='red' stroke-width='2'/>\n"
+        << "<text x='" << X(v.u) + 8 << "' y='" << Y(v.v) - 8 << "' font-size='12' fill='red'>" << v.branches
+        << " branches (" << v.u << ", " << v.v << ")</text>\n";
+    if (v.on_boundary)
+      s << "<rect x='" << X(v.u) - 4 << "' y='" << Y(v.v) - 4 << "' width='8' height='8' fill='blue'/>\n";
+  }
+  s << "</svg>\n";
+}
+
+void write_obj(const std::string& path, const std::vector<const Patch*>& patches, const bezoutian::Surface_locus& L) {
+  std::ofstream s(path);
+  if (!s) throw bezoutian::Error("cannot write " + path);
+  std::size_t base = 1;
+  const int N = 24;
+  for (std::size_t pi = 0; pi < patches.size(); ++pi) {
+    s << "o patch_" << pi << "\n";
+    for (int i = 0; i <= N; ++i)
+      for (int j = 0; j <= N; ++j) {
+        auto p = patches[pi]->evaluate(double(i) / N, double(j) / N);
+        s << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+      }
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) {
+        const std::size_t a = base + i * (N + 1) + j, b = a + 1, c = a + (N + 1), d = c + 1;
+        s << "f " << a << " " << c << " " << d << " " << b << "\n";
+      }
+    base += (N + 1) * (N + 1);
+  }
+  s << "o locus\n";
+  for (const auto& arc : L.arcs) {
+    std::vector<std::size_t> ids;
+    for (const auto& q : arc.points) {
+      if (!q.lifted || !q.genuine) {
+        if (ids.size() > 1) {
+          s << "l";
+          for (auto i : ids) s << " " << i;
+          s << "\n";
+        }
+        ids.clear();
+        continue;
+      }
+      s << "v " << q.point_3d[0] << " " << q.point_3d[1] << " " << q.point_3d[2] << "\n";
+      ids.push_back(base++);
+    }
+    if (ids.size() > 1) {
+      s << "l";
+      for (auto i : ids) s << " " << i;
+      s << "\n";
+    }
+  }
+}
+
+void print_text(const bezoutian::Surface_locus& L, double seconds) {
+  const auto& e = L.equation;
+  std::cout << (L.self_intersection ? "Self-intersection" : "Intersection") << " locus: Bezoutian matrix "
+            << e.matrix.size() << " x " << e.matrix.size() << ", D(" << e.variables[0] << "," << e.variables[1]
+            << ") of bi-degree (" << e.degree(0) << ", " << e.degree(1) << "), total degree " << e.total_degree()
+            << ", " << e.terms().size() << " terms\n";
+  const auto& T = L.topology;
+  std::cout << "certified topology in [" << T.box.u0 << ", " << T.box.u1 << "] x [" << T.box.v0 << ", " << T.box.v1
+            << "]: " << T.components.size() << " component(s), " << T.number_of_singular_points()
+            << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
+  for (std::size_t i = 0; i < T.components.size(); ++i) {
+    const auto& c = T.components[i];
+    std::size_t genuine = 0, total = 0;
+    double worst = 0;
+    for (auto ei : c.edges)
+      for (const auto& q : L.arcs[ei].points) {
+        ++total;
+        genuine += q.genuine;
+        if (q.lifted && std::isfinite(q.residual)) worst = std::max(worst, q.residual);
+      }
+    std::cout << "  component " << i << ": " << (c.isolated_point ? "isolated point" : c.closed ? "closed loop" : "open arc(s)")
+              << ", " << c.edges.size() << " arc(s), " << genuine << "/" << total
+              << " traced points with partner in the domain, max residual " << worst << "\n";
+  }
+  for (const auto& v : T.vertices)
+    if (v.kind == bezoutian::Curve_topology_vertex::singular)
+      std::cout << "  singular point (" << v.u << ", " << v.v << ") in [" << v.u_lo << ", " << v.u_hi << "] x ["
+                << v.v_lo << ", " << v.v_hi << "]: " << v.branches << " branches\n";
+  std::cout << "computed in " << seconds << " s\n";
+}
+
+void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, const std::string& domain) {
+  bezoutian::Surface_intersection_options so;
+  so.box = parse_box(o.box, "--box");
+  if (domain == "none")
+    so.partner_domain_unbounded = true;
+  else
+    so.partner_domain = parse_box(domain, "--domain");
+  so.tolerance = o.tolerance;
+  auto t0 = std::chrono::steady_clock::now();
+  bezoutian::Surface_locus L = self ? bezoutian::self_intersection_locus(a, so) : bezoutian::intersection_locus(a, *b, so);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.json)
+    std::cout << to_json(L, s).dump(1) << "\n";
+  else
+    print_text(L, s);
+  if (!o.svg.empty()) write_svg(o.svg, L);
+  std::vector<const Patch*> ps = {&a};
+  if (b) ps.push_back(b);
+  if (!o.obj.empty()) write_obj(o.obj, ps, L);
+}
+
+std::shared_ptr<std::string> intersect_domain = std::make_shared<std::string>();
+
+} // namespace
+
+void run_patch_intersect(const Intersect_options& o) {
+  Patch a = patch_of(o.file_a, 0);
+  Patch b = o.file_b.empty() ? patch_of(o.file_a, 1) : patch_of(o.file_b, 0);
+  run(false, a, &b, o, *intersect_domain);
+}
+
+namespace {
+Register self_registration([](CLI::App& app) {
+  auto o = std::make_shared<Intersect_options>();
+  auto domain = std::make_shared<std::string>();
+  auto* sub = app.add_subcommand("self-intersect", "Self-intersection locus of a patch with certified topology");
+  sub->add_option("FILE", o->file_a, "patch file (the first patch is used)")->required();
+  sub->add_option("--box", o->box, "region u0,u1,v0,v1 of the (u,v) plane to analyse (default 0,1,0,1)");
+  sub->add_option("--domain", *domain, "partner domain u0,u1,v0,v1 (default 0,1,0,1) or 'none'");
+  sub->add_option("--svg", o->svg, "write the picture of the locus in the (u,v) plane");
+  sub->add_option("--obj", o->obj, "write the patch mesh and the 3D double curve");
+  sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
+  sub->add_flag("--json", o->json, "machine-readable output");
+  sub->callback([o, domain] {
+    Patch p = patch_of(o->file_a, 0);
+    run(true, p, nullptr, *o, *domain);
+  });
+});
+} // namespace
 } // namespace bezoutian_cli

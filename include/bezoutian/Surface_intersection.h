@@ -1,0 +1,298 @@
+// Self-intersection locus of a rational Bezier patch and intersection curve of two patches:
+// the implicit equation D of the projected locus (buse-elkadi-galligo-2008 Theorems 2-5), its certified
+// topology in a parameter box (Curve_topology_in_box.h), and the lifting of every traced point to its
+// partner parameters through the kernel of the Bezoutian matrix (§4: U is in the kernel of B^t, so the
+// partner is a ratio of kernel entries).
+//
+// What is certified: D exactly; the components of D = 0 in the box, its singular points with their branch
+// counts and its boundary points. The lifting of sample points to the partner parameters, and therefore the
+// removal of phantom branches (partner outside its domain, or (k,l) = (0,0)), is computed in floating point
+// along the certified arcs and verified by the residual |Phi - Psi| at each point; it is reported as such.
+#ifndef BEZOUTIAN_SURFACE_INTERSECTION_H
+#define BEZOUTIAN_SURFACE_INTERSECTION_H
+
+#include <bezoutian/Curve_topology_in_box.h>
+#include <bezoutian/Implicit_equation.h>
+#include <bezoutian/Rational_bezier_patch.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace bezoutian {
+
+/// Options of the surface (self-)intersection computations.
+struct Surface_intersection_options {
+  /// Region of the projection plane ((u,v) for self-intersection, (u,t) for intersection) that is analysed.
+  Parameter_box box;
+  /// Domain of the partner parameters (the patches' parameter domain); `partner_domain_unbounded` ignores it.
+  Parameter_box partner_domain;
+  bool partner_domain_unbounded = false;
+  /// Certified sample points per arc of D = 0 and the precision of their ordinates.
+  int samples_per_arc = 24;
+  double tolerance = 1e-9;
+  Bezoutian_formula formula = Bezoutian_formula::automatic;
+};
+
+/// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
+struct Locus_point {
+  std::array<double, 2> projection{};  ///< (u,v) (self) or (u,t) (intersection)
+  std::array<double, 2> partner{};     ///< (k,l) offsets turned into parameters: see Surface_locus
+  std::array<double, 2> first{}, second{};  ///< the two parameter points that map to the same 3D point
+  std::array<double, 3> point_3d{};
+  double residual = std::numeric_limits<double>::quiet_NaN();  ///< |Phi(first) - Phi/Psi(second)|
+  bool lifted = false;   ///< the kernel gave a partner
+  bool genuine = false;  ///< partner inside its domain and distinct from the point itself
+};
+
+/// One arc of D = 0 inside the box, traced.
+struct Locus_arc {
+  std::size_t source = 0, target = 0;  ///< vertices of the certified topology
+  std::vector<Locus_point> points;
+};
+
+/// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
+struct Surface_locus {
+  bool self_intersection = true;
+  Implicit_equation equation;
+  Curve_topology_in_box topology;
+  std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
+};
+
+namespace internal {
+
+// Floating-point evaluation of a rational bivariate polynomial (inner variable x, outer y).
+inline double evaluate_double(const Polynomial_2<Rational>& p, double x, double y) {
+  double r = 0;
+  for (int j = p.degree(); j >= 0; --j) {
+    double c = 0;
+    for (int i = p[j].degree(); i >= 0; --i) c = c * x + CGAL::to_double(p[j][i]);
+    r = r * y + c;
+  }
+  return r;
+}
+
+// A null vector of the (numerically singular) square matrix A, by Gaussian elimination with complete
+// pivoting; the last pivot is the smallest and its variable is set to 1.
+inline std::vector<long double> null_vector(std::vector<std::vector<long double>> A) {
+  const std::size_t n = A.size();
+  std::vector<std::size_t> col(n);
+  for (std::size_t i = 0; i < n; ++i) col[i] = i;
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    std::size_t pr = k, pc = k;
+    long double best = -1;
+    for (std::size_t i = k; i < n; ++i)
+      for (std::size_t j = k; j < n; ++j)
+        if (std::fabs(A[i][j]) > best) best = std::fabs(A[i][j]), pr = i, pc = j;
+    std::swap(A[k], A[pr]);
+    for (auto& row : A) std::swap(row[k], row[pc]);
+    std::swap(col[k], col[pc]);
+    if (best == 0) break;
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const long double f = A[i][k] / A[k][k];
+      for (std::size_t j = k; j < n; ++j) A[i][j] -= f * A[k][j];
+    }
+  }
+  std::vector<long double> y(n, 0);
+  if (n == 0) return y;
+  y[n - 1] = 1;
+  for (std::size_t k = n - 1; k-- > 0;) {
+    long double s = 0;
+    for (std::size_t j = k + 1; j < n; ++j) s += A[k][j] * y[j];
+    y[k] = A[k][k] != 0 ? -s / A[k][k] : 0;
+  }
+  std::vector<long double> x(n);
+  for (std::size_t i = 0; i < n; ++i) x[col[i]] = y[i];
+  return x;
+}
+
+// Ratio x^(i+1,j) / x^(i,j) (direction 0) or x^(i,j+1) / x^(i,j) (direction 1) of a kernel vector indexed
+// by monomials, using the pair with the largest denominator for stability.
+inline bool monomial_ratio(const std::vector<std::pair<int, int>>& mono, const std::vector<long double>& x,
+                           int direction, long double& out) {
+  long double best = 0;
+  bool found = false;
+  for (std::size_t a = 0; a < mono.size(); ++a)
+    for (std::size_t b = 0; b < mono.size(); ++b) {
+      const bool next = direction == 0 ? (mono[b].first == mono[a].first + 1 && mono[b].second == mono[a].second)
+                                       : (mono[b].second == mono[a].second + 1 && mono[b].first == mono[a].first);
+      if (next && std::fabs(x[a]) > best) best = std::fabs(x[a]), out = x[b] / x[a], found = true;
+    }
+  return found;
+}
+
+inline bool inside(const Parameter_box& d, const std::array<double, 2>& p, double slack = 1e-9) {
+  return CGAL::to_double(d.u0) - slack <= p[0] && p[0] <= CGAL::to_double(d.u1) + slack &&
+         CGAL::to_double(d.v0) - slack <= p[1] && p[1] <= CGAL::to_double(d.v1) + slack;
+}
+
+// Gauss-Newton polishing of the partner parameters (a, b) of a traced point: minimizes |r(a,b)| with
+// r : R^2 -> R^3 (three coordinate equations, two unknowns); the Jacobian by central differences.
+template <class R>
+std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iterations = 8) {
+  auto norm = [](const std::array<double, 3>& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+  std::array<double, 3> f = r(x[0], x[1]);
+  for (int it = 0; it < iterations; ++it) {
+    const double h = 1e-7;
+    std::array<std::array<double, 3>, 2> J;
+    for (int c = 0; c < 2; ++c) {
+      std::array<double, 2> p = x, m = x;
+      p[c] += h, m[c] -= h;
+      auto fp = r(p[0], p[1]), fm = r(m[0], m[1]);
+      for (int k = 0; k < 3; ++k) J[c][k] = (fp[k] - fm[k]) / (2 * h);
+    }
+    // normal equations J^T J d = -J^T f
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      a11 += J[0][k] * J[0][k], a12 += J[0][k] * J[1][k], a22 += J[1][k] * J[1][k];
+      b1 -= J[0][k] * f[k], b2 -= J[1][k] * f[k];
+    }
+    const double det = a11 * a22 - a12 * a12;
+    if (!(std::fabs(det) > 0)) break;
+    std::array<double, 2> y = {x[0] + (b1 * a22 - b2 * a12) / det, x[1] + (a11 * b2 - a12 * b1) / det};
+    auto fy = r(y[0], y[1]);
+    if (!(norm(fy) < norm(f))) break;
+    x = y, f = fy;
+  }
+  return x;
+}
+
+// Lifts every traced point with `lift_point(u, v, guess)`: the kernel gives the partner at regular points;
+// at a singular vertex the kernel has dimension > 1 and each arc continues its own partner from its
+// neighbouring point (three branches through a triple point have three partners there).
+template <class F>
+void lift_arcs(Surface_locus& L, F lift_point) {
+  for (const auto& e : L.topology.edges) {
+    Locus_arc arc;
+    arc.source = e.source;
+    arc.target = e.target;
+    for (const auto& p : e.polyline) arc.points.push_back(lift_point(p[0], p[1], nullptr));
+    const std::size_t n = arc.points.size();
+    const bool singular_ends[2] = {L.topology.vertices[e.source].kind != Curve_topology_vertex::regular,
+                                   L.topology.vertices[e.target].kind != Curve_topology_vertex::regular};
+    if (n >= 2 && singular_ends[0] && arc.points[1].lifted)
+      arc.points[0] = lift_point(e.polyline[0][0], e.polyline[0][1], &arc.points[1].partner);
+    if (n >= 2 && singular_ends[1] && arc.points[n - 2].lifted)
+      arc.points[n - 1] = lift_point(e.polyline[n - 1][0], e.polyline[n - 1][1], &arc.points[n - 2].partner);
+    L.arcs.push_back(arc);
+  }
+}
+
+inline std::vector<std::vector<long double>> evaluate_matrix(const Bezoutian_matrix& B, double x, double y) {
+  std::vector<std::vector<long double>> A(B.size(), std::vector<long double>(B.size()));
+  for (std::size_t i = 0; i < B.size(); ++i)
+    for (std::size_t j = 0; j < B.size(); ++j) A[i][j] = evaluate_double(B.entries[i][j], x, y);
+  return A;
+}
+
+inline std::vector<std::vector<long double>> transpose(const std::vector<std::vector<long double>>& A) {
+  std::vector<std::vector<long double>> T(A.size(), std::vector<long double>(A.size()));
+  for (std::size_t i = 0; i < A.size(); ++i)
+    for (std::size_t j = 0; j < A.size(); ++j) T[j][i] = A[i][j];
+  return T;
+}
+
+inline double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+} // namespace internal
+
+/// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
+/// every traced point lifted to the two parameter points (u, v+k) and (u+l, v) with the same image.
+inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rational>& patch,
+                                             const Surface_intersection_options& o = {}) {
+  Surface_locus L;
+  L.self_intersection = true;
+  L.equation = self_intersection_equation(patch, o.formula);
+  if (L.equation.is_degenerate())
+    throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
+                        "Theorems 4-5, e.g. it covers a surface twice)");
+  if (L.equation.square_free.degree() <= 0 && L.equation.square_free[0].degree() <= 0) return L;  // D constant
+  L.topology = analyse_curve_in_box(L.equation.square_free, o.box, o.tolerance, o.samples_per_arc);
+  const Bezoutian_matrix& B = L.equation.matrix;
+  internal::lift_arcs(L, [&](double u, double v, const std::array<double, 2>* guess) {
+    Locus_point q;
+    q.projection = {u, v};
+    std::array<double, 2> lk;  // (l, k)
+    if (guess) {
+      lk = *guess;
+      q.lifted = true;
+    } else {
+      long double k = 0, l = 0;
+      const auto x = internal::null_vector(internal::transpose(internal::evaluate_matrix(B, u, v)));
+      // U = [l^i k^j]: l = ratio along the first exponent, k along the second
+      q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, l) && internal::monomial_ratio(B.row_monomials, x, 1, k);
+      lk = {double(l), double(k)};
+    }
+    if (!q.lifted || !std::isfinite(lk[0]) || !std::isfinite(lk[1])) return q.lifted = false, q;
+    lk = internal::polish_partner(
+        [&](double l, double k) {
+          auto a = patch.evaluate(u, v + k), b = patch.evaluate(u + l, v);
+          return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+        },
+        lk);
+    q.partner = lk;
+    q.first = {u, v + lk[1]};
+    q.second = {u + lk[0], v};
+    q.point_3d = patch.evaluate(q.second[0], q.second[1]);
+    q.residual = internal::distance3(patch.evaluate(q.first[0], q.first[1]), q.point_3d);
+    const bool distinct = std::fabs(lk[0]) + std::fabs(lk[1]) > 1e-9;
+    q.genuine = distinct && (o.partner_domain_unbounded ||
+                             (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
+    return q;
+  });
+  return L;
+}
+
+/// \brief Intersection curve of the patches `phi` (u,v) and `psi` (s,t) (Theorems 2, 3): D(u,t), its certified
+/// topology in `o.box`, and every traced point lifted to (u,v) on phi and (s,t) on psi.
+inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& phi,
+                                        const Rational_bezier_patch<Rational>& psi,
+                                        const Surface_intersection_options& o = {}) {
+  Surface_locus L;
+  L.self_intersection = false;
+  L.equation = intersection_equation(phi, psi, o.formula);
+  if (L.equation.is_degenerate())
+    throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
+                        "are not generic in the sense of Theorems 2-3");
+  if (L.equation.square_free.degree() <= 0 && L.equation.square_free[0].degree() <= 0) return L;
+  L.topology = analyse_curve_in_box(L.equation.square_free, o.box, o.tolerance, o.samples_per_arc);
+  const Bezoutian_matrix& B = L.equation.matrix;
+  internal::lift_arcs(L, [&](double u, double t, const std::array<double, 2>* guess) {
+    Locus_point q;
+    q.projection = {u, t};
+    std::array<double, 2> vs;  // (v, s)
+    if (guess) {
+      vs = *guess;
+      q.lifted = true;
+    } else {
+      // U = [s^i v^j] with the monomial 1 present: s = U(1,0)/U(0,0), v = U(0,1)/U(0,0)
+      long double s = 0, v = 0;
+      const auto x = internal::null_vector(internal::transpose(internal::evaluate_matrix(B, u, t)));
+      q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, s) && internal::monomial_ratio(B.row_monomials, x, 1, v);
+      vs = {double(v), double(s)};
+    }
+    if (!q.lifted || !std::isfinite(vs[0]) || !std::isfinite(vs[1])) return q.lifted = false, q;
+    vs = internal::polish_partner(
+        [&](double v, double s) {
+          auto a = phi.evaluate(u, v), b = psi.evaluate(s, t);
+          return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+        },
+        vs);
+    q.partner = vs;
+    q.first = {u, vs[0]};
+    q.second = {vs[1], t};
+    q.point_3d = phi.evaluate(q.first[0], q.first[1]);
+    q.residual = internal::distance3(q.point_3d, psi.evaluate(q.second[0], q.second[1]));
+    q.genuine = o.partner_domain_unbounded ||
+                (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second));
+    return q;
+  });
+  return L;
+}
+
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_SURFACE_INTERSECTION_H
