@@ -210,10 +210,21 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << ", " << c.edges.size() << " arc(s), " << genuine << "/" << total
               << " traced points with partner in the domain, max residual " << worst << "\n";
   }
-  for (const auto& v : T.vertices)
-    if (v.kind == bezoutian::Curve_topology_vertex::singular)
-      std::cout << "  singular point (" << v.u << ", " << v.v << ") in [" << v.u_lo << ", " << v.u_hi << "] x ["
-                << v.v_lo << ", " << v.v_hi << "]: " << v.branches << " branches\n";
+  const auto old_precision = std::cout.precision(17);
+  for (std::size_t vi = 0; vi < T.vertices.size(); ++vi) {
+    const auto& v = T.vertices[vi];
+    if (v.kind != bezoutian::Curve_topology_vertex::singular) continue;
+    std::cout << "  singular point in [" << v.u_lo << ", " << v.u_hi << "] x [" << v.v_lo << ", " << v.v_hi
+              << "]: " << v.branches << " branches; partner (" << (L.self_intersection ? "l, k" : "v, s")
+              << ") along each arc:\n";
+    for (const auto& arc : L.arcs) {
+      if (arc.points.empty()) continue;
+      const bezoutian::Locus_point* q = arc.source == vi ? &arc.points.front() : arc.target == vi ? &arc.points.back() : nullptr;
+      if (q && q->lifted)
+        std::cout << "    (" << q->partner[0] << ", " << q->partner[1] << ")  residual " << q->residual << "\n";
+    }
+  }
+  std::cout.precision(old_precision);
   std::cout << "computed in " << seconds << " s\n";
 }
 

@@ -158,6 +158,24 @@ std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iteration
   return x;
 }
 
+// When the kernel does not determine the partner (a ratio 0/0, e.g. k = 0 on a pinch curve), the best
+// point of a grid over `range` (excluding the trivial partner (0,0)) seeds the polishing.
+template <class R>
+std::array<double, 2> grid_seed(R r, const std::array<double, 4>& range) {
+  std::array<double, 2> best{std::numeric_limits<double>::quiet_NaN(), 0};
+  double bv = std::numeric_limits<double>::infinity();
+  const int N = 40;
+  for (int i = 0; i <= N; ++i)
+    for (int j = 0; j <= N; ++j) {
+      const double a = range[0] + (range[1] - range[0]) * i / N, b = range[2] + (range[3] - range[2]) * j / N;
+      if (std::fabs(a) + std::fabs(b) < 1e-3) continue;
+      auto f = r(a, b);
+      const double v = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+      if (v < bv) bv = v, best = {a, b};
+    }
+  return best;
+}
+
 // Lifts every traced point with `lift_point(u, v, guess)`: the kernel gives the partner at regular points;
 // at a singular vertex the kernel has dimension > 1 and each arc continues its own partner from its
 // neighbouring point (three branches through a triple point have three partners there).
@@ -226,13 +244,21 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
       q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, l) && internal::monomial_ratio(B.row_monomials, x, 1, k);
       lk = {double(l), double(k)};
     }
-    if (!q.lifted || !std::isfinite(lk[0]) || !std::isfinite(lk[1])) return q.lifted = false, q;
-    lk = internal::polish_partner(
-        [&](double l, double k) {
-          auto a = patch.evaluate(u, v + k), b = patch.evaluate(u + l, v);
-          return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-        },
-        lk);
+    auto residual = [&](double l, double k) {
+      auto a = patch.evaluate(u, v + k), b = patch.evaluate(u + l, v);
+      return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    if (!q.lifted || !std::isfinite(lk[0]) || !std::isfinite(lk[1])) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
+                                                             CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
+      lk = internal::grid_seed(residual, range);
+      q.lifted = std::isfinite(lk[0]);
+      if (!q.lifted) return q;
+    }
+    lk = internal::polish_partner(residual, lk);
     q.partner = lk;
     q.first = {u, v + lk[1]};
     q.second = {u + lk[0], v};
@@ -274,13 +300,21 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, s) && internal::monomial_ratio(B.row_monomials, x, 1, v);
       vs = {double(v), double(s)};
     }
-    if (!q.lifted || !std::isfinite(vs[0]) || !std::isfinite(vs[1])) return q.lifted = false, q;
-    vs = internal::polish_partner(
-        [&](double v, double s) {
-          auto a = phi.evaluate(u, v), b = psi.evaluate(s, t);
-          return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-        },
-        vs);
+    auto residual = [&](double v, double s) {
+      auto a = phi.evaluate(u, v), b = psi.evaluate(s, t);
+      return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    if (!q.lifted || !std::isfinite(vs[0]) || !std::isfinite(vs[1])) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
+                                                             CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
+      vs = internal::grid_seed(residual, range);
+      q.lifted = std::isfinite(vs[0]);
+      if (!q.lifted) return q;
+    }
+    vs = internal::polish_partner(residual, vs);
     q.partner = vs;
     q.first = {u, vs[0]};
     q.second = {vs[1], t};

@@ -1,0 +1,114 @@
+// Surface self-intersection and intersection loci: the worked example of buse-elkadi-galligo-2008 §4, a patch
+// folded over itself whose double curve is known in closed form, a patch without self-intersection, and two
+// patches crossing along a known curve.
+#include <catch2/catch.hpp>
+
+#include "test_support.h"
+
+#include <bezoutian/Surface_intersection.h>
+#include <bezoutian/io/Geometry_document.h>
+
+#include <set>
+
+using namespace bezoutian;
+using Q = Rational;
+using Patch = Rational_bezier_patch<>;
+
+namespace {
+Patch from_power(const std::array<std::string, 3>& xyz, int m, int n) {
+  // power-basis patch via the JSON reader (exact)
+  std::string json = "{\"patch\": {\"basis\": \"power\", \"parameters\": [\"u\", \"v\"], \"x\": \"" + xyz[0] +
+                     "\", \"y\": \"" + xyz[1] + "\", \"z\": \"" + xyz[2] + "\", \"degree\": [" + std::to_string(m) +
+                     ", " + std::to_string(n) + "]}}";
+  return io::read_json(json, "test").patches.at(0);
+}
+}  // namespace
+
+TEST_CASE("worked example: triple point with three branches and three partners", "[surface][seed]") {
+  auto doc = io::read_geometry_file(bezoutian_test::source_file("examples/data/bezoutian_worked_example.json"));
+  Surface_intersection_options o;
+  o.box = Parameter_box{Q(-11, 10), Q(-1), Q(-1, 10), Q(0)};
+  o.partner_domain_unbounded = true;
+  Surface_locus L = self_intersection_locus(doc.patches[0], o);
+  CHECK(L.equation.matrix.size() == 3);
+  REQUIRE(L.topology.number_of_singular_points() == 1);
+  std::size_t sv = 0;
+  for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)
+    if (L.topology.vertices[i].kind == Curve_topology_vertex::singular) sv = i;
+  CHECK(L.topology.vertices[sv].branches == 3);
+  // every traced point is a true double point: both preimages map to the same 3D point
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      REQUIRE(q.lifted);
+      CHECK(q.residual < 1e-6);
+      CHECK(std::fabs(q.partner[0]) + std::fabs(q.partner[1]) > 1e-3);
+    }
+  // at the triple point the six half-branches carry three distinct partners (three sheets cross pairwise)
+  std::vector<std::array<double, 2>> partners;
+  for (const auto& arc : L.arcs) {
+    if (arc.source == sv) partners.push_back(arc.points.front().partner);
+    if (arc.target == sv) partners.push_back(arc.points.back().partner);
+  }
+  REQUIRE(partners.size() == 6);
+  std::vector<std::array<double, 2>> distinct;
+  for (const auto& p : partners) {
+    bool seen = false;
+    for (const auto& d : distinct) seen |= std::hypot(p[0] - d[0], p[1] - d[1]) < 1e-5;
+    if (!seen) distinct.push_back(p);
+  }
+  CHECK(distinct.size() == 3);
+}
+
+TEST_CASE("a patch covering its image twice is reported; a pinch double curve is lifted", "[surface]") {
+  // Phi(u,v) = (u, (v - 1/2)^2, (v - 1/2) u^2 ... ) would not self-intersect; instead fold in v:
+  // Phi(u,v) = (u, (2v-1)^2, u (2v-1)^2): Phi(u,v) = Phi(u,1-v) for every (u,v): a patch covering its image
+  // twice has det B = 0 identically, reported as a degenerate input.
+  Patch fold = from_power({"u", "(2*v-1)^2", "u*(2*v-1)^2 + u^2"}, 2, 2);
+  CHECK_THROWS_AS(self_intersection_locus(fold), Invalid_input);
+  // Whitney-umbrella-like patch X = u v, Y = v, Z = u^2 (degree (2,1)) pinches along the segment Y = 0:
+  // Phi(u,0) = Phi(-u,0): the double curve is v = 0 with partner l = -2u, k = 0.
+  Patch umbrella = from_power({"u*v + v^2", "v", "u^2"}, 2, 2);
+  Surface_intersection_options o;
+  o.box = Parameter_box{Q(-1, 2), Q(1, 2), Q(-1, 3), Q(1, 3)};
+  o.partner_domain_unbounded = true;
+  Surface_locus L = self_intersection_locus(umbrella, o);
+  // the genuine double curve v = 0 must be in the locus: an arc along v = 0 with partner l = -2u, k = 0
+  bool found = false;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points)
+      if (q.lifted && std::fabs(q.projection[1]) < 1e-9 && std::fabs(q.projection[0]) > 0.05) {
+        found = true;
+        CHECK(q.partner[0] == Approx(-2 * q.projection[0]).margin(1e-6));
+        CHECK(q.partner[1] == Approx(0).margin(1e-6));
+      }
+  CHECK(found);
+}
+
+TEST_CASE("a paraboloid and a bent paraboloid cross along a closed curve", "[surface]") {
+  // Phi(u,v) = (u, v, u^2 + v^2), Psi(s,t) = (s + s^2, t, 1 - s^2 - t^2): Phi(u,v) = Psi(s,t) iff u = s + s^2,
+  // v = t and (s + s^2)^2 + t^2 = 1 - s^2 - t^2, a closed curve. (Two plain paraboloids would have parallel
+  // leading coefficient vectors and a common point at infinity: det B = 0, correctly reported.)
+  Patch phi = from_power({"u", "v", "u^2 + v^2"}, 2, 2);
+  Patch psi = from_power({"u + u^2", "v", "1 - u^2 - v^2"}, 2, 2);
+  Patch flat = from_power({"u", "v", "1 - u^2 - v^2"}, 2, 2);
+  CHECK_THROWS_AS(intersection_locus(phi, flat), Invalid_input);
+  Surface_intersection_options o;
+  o.box = Parameter_box{Q(-2), Q(2), Q(-2), Q(2)};
+  o.partner_domain = o.box;
+  Surface_locus L = intersection_locus(phi, psi, o);
+  REQUIRE(L.topology.components.size() >= 1);
+  std::size_t checked = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      if (!q.lifted || q.residual > 1e-8) continue;
+      const double u = q.projection[0], t = q.projection[1], v = q.partner[0], s = q.partner[1];
+      CHECK(v == Approx(t).margin(1e-7));
+      CHECK(u == Approx(s + s * s).margin(1e-7));
+      CHECK(u * u + v * v == Approx(1 - s * s - t * t).margin(1e-7));
+      ++checked;
+    }
+  CHECK(checked > 20);
+  bool closed = false;
+  for (const auto& c : L.topology.components) closed |= c.closed;
+  CHECK(closed);
+}
