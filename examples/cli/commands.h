@@ -20,6 +20,7 @@ struct Register {
 
 #endif
 
+#include <memory>
 #include <string>
 
 namespace bezoutian_cli {
@@ -31,6 +32,7 @@ struct Intersect_options {
   std::string box;                  // patches: u0,u1,v0,v1 region of interest
   std::string svg, obj;             // patches: pictures
   double tolerance = 1e-9;          // patches: precision of traced ordinates
+  int max_degree = 40;              // patches: largest total degree of D for the certified topology
   bool json = false;
 };
 
@@ -38,5 +40,7 @@ struct Intersect_options {
 void run_curve_intersect(const Intersect_options& o);
 /// Patch/patch intersection (examples/cli/surface_commands.cpp).
 void run_patch_intersect(const Intersect_options& o);
+/// The --domain option of `intersect` for patches (shared by the dispatcher and the surface command).
+std::shared_ptr<std::string> patch_intersect_domain();
 
 } // namespace bezoutian_cli

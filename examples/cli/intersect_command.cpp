@@ -9,6 +9,7 @@ namespace {
 
 bezoutian_cli::Register intersect_registration([](CLI::App& app) {
   auto o = std::make_shared<bezoutian_cli::Intersect_options>();
+  auto domain = bezoutian_cli::patch_intersect_domain();
   auto* sub = app.add_subcommand("intersect",
                                  "Certified intersection of two curves, a curve and a patch, or two patches");
   sub->add_option("FILE_A", o->file_a, "first object (the first curve or patch of the file)")->required();
@@ -19,6 +20,8 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
   sub->add_option("--svg", o->svg, "patches: write a picture of the parameter-space curves");
   sub->add_option("--obj", o->obj, "patches: write the patches and the 3D curves as OBJ");
   sub->add_option("--tolerance", o->tolerance, "patches: polyline tolerance");
+  sub->add_option("--max-degree", o->max_degree, "patches: largest total degree of D for the certified topology");
+  sub->add_option("--domain", *domain, "patches: partner domain v0,v1,s0,s1 (default 0,1,0,1) or 'none'");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o] {
     // Patches on both sides: surface/surface; anything else: the curve engine.

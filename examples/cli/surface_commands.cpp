@@ -59,6 +59,8 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                    {"total_degree", L.equation.total_degree()},
                    {"terms", terms}};
   const auto& T = L.topology;
+  j["topology_computed"] = L.topology_computed;
+  if (!L.note.empty()) j["note"] = L.note;
   j["box"] = {CGAL::to_double(T.box.u0), CGAL::to_double(T.box.u1), CGAL::to_double(T.box.v0), CGAL::to_double(T.box.v1)};
   json comps = json::array();
   for (const auto& c : T.components) {
@@ -193,6 +195,10 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
             << ") of bi-degree (" << e.degree(0) << ", " << e.degree(1) << "), total degree " << e.total_degree()
             << ", " << e.terms().size() << " terms\n";
   const auto& T = L.topology;
+  if (!L.topology_computed) {
+    std::cout << "note: " << L.note << "\n";
+    return;
+  }
   std::cout << "certified topology in [" << T.box.u0 << ", " << T.box.u1 << "] x [" << T.box.v0 << ", " << T.box.v1
             << "]: " << T.components.size() << " component(s), " << T.number_of_singular_points()
             << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
@@ -236,6 +242,7 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   else
     so.partner_domain = parse_box(domain, "--domain");
   so.tolerance = o.tolerance;
+  so.max_total_degree_for_topology = o.max_degree;
   auto t0 = std::chrono::steady_clock::now();
   bezoutian::Surface_locus L = self ? bezoutian::self_intersection_locus(a, so) : bezoutian::intersection_locus(a, *b, so);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -249,14 +256,17 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   if (!o.obj.empty()) write_obj(o.obj, ps, L);
 }
 
-std::shared_ptr<std::string> intersect_domain = std::make_shared<std::string>();
-
 } // namespace
+
+std::shared_ptr<std::string> patch_intersect_domain() {
+  static auto d = std::make_shared<std::string>();
+  return d;
+}
 
 void run_patch_intersect(const Intersect_options& o) {
   Patch a = patch_of(o.file_a, 0);
   Patch b = o.file_b.empty() ? patch_of(o.file_a, 1) : patch_of(o.file_b, 0);
-  run(false, a, &b, o, *intersect_domain);
+  run(false, a, &b, o, *patch_intersect_domain());
 }
 
 namespace {
@@ -270,6 +280,7 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--svg", o->svg, "write the picture of the locus in the (u,v) plane");
   sub->add_option("--obj", o->obj, "write the patch mesh and the 3D double curve");
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
+  sub->add_option("--max-degree", o->max_degree, "largest total degree of D for the certified topology (default 40)");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o, domain] {
     Patch p = patch_of(o->file_a, 0);

@@ -16,6 +16,7 @@
 #include <bezoutian/Rational_bezier_patch.h>
 
 #include <array>
+#include <string>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -33,6 +34,10 @@ struct Surface_intersection_options {
   int samples_per_arc = 24;
   double tolerance = 1e-9;
   Bezoutian_formula formula = Bezoutian_formula::automatic;
+  /// The certified topology uses CGAL's whole-plane curve analysis, whose cost explodes with the degree;
+  /// above this total degree of D the topology is not attempted (Surface_locus::topology_computed == false)
+  /// instead of running for hours. See doc/surface_intersection.md for measured times.
+  int max_total_degree_for_topology = 40;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
@@ -58,6 +63,8 @@ struct Surface_locus {
   Implicit_equation equation;
   Curve_topology_in_box topology;
   std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
+  bool topology_computed = false;
+  std::string note;  ///< why the topology was not computed, if it was not
 };
 
 namespace internal {
@@ -215,6 +222,30 @@ inline double distance3(const std::array<double, 3>& a, const std::array<double,
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+// Computes the topology of the square-free D in the box unless D is constant (no locus: proved empty) or its
+// degree is above the limit; returns whether lifting should follow.
+inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_options& o) {
+  const Polynomial_2<Integer>& D = L.equation.square_free;
+  L.topology.box = o.box;
+  if (D.degree() <= 0 && D[0].degree() <= 0) {
+    L.topology_computed = true;  // D is a nonzero constant: the locus is empty, proved
+    return false;
+  }
+  int total = -1;
+  for (int j = 0; j <= D.degree(); ++j)
+    if (!CGAL::is_zero(D[j])) total = std::max(total, j + D[j].degree());
+  if (total > o.max_total_degree_for_topology) {
+    L.note = "the certified topology of D = 0 (total degree " + std::to_string(total) +
+             ") was not attempted: above max_total_degree_for_topology = " +
+             std::to_string(o.max_total_degree_for_topology) +
+             " CGAL's whole-plane curve analysis takes too long; the implicit equation D is exact";
+    return false;
+  }
+  L.topology = analyse_curve_in_box(D, o.box, o.tolerance, o.samples_per_arc);
+  L.topology_computed = true;
+  return true;
+}
+
 } // namespace internal
 
 /// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
@@ -227,8 +258,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   if (L.equation.is_degenerate())
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
                         "Theorems 4-5, e.g. it covers a surface twice)");
-  if (L.equation.square_free.degree() <= 0 && L.equation.square_free[0].degree() <= 0) return L;  // D constant
-  L.topology = analyse_curve_in_box(L.equation.square_free, o.box, o.tolerance, o.samples_per_arc);
+  if (!internal::topology_is_affordable(L, o)) return L;
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double v, const std::array<double, 2>* guess) {
     Locus_point q;
@@ -283,8 +313,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
                         "are not generic in the sense of Theorems 2-3");
-  if (L.equation.square_free.degree() <= 0 && L.equation.square_free[0].degree() <= 0) return L;
-  L.topology = analyse_curve_in_box(L.equation.square_free, o.box, o.tolerance, o.samples_per_arc);
+  if (!internal::topology_is_affordable(L, o)) return L;
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double t, const std::array<double, 2>* guess) {
     Locus_point q;

@@ -1,0 +1,55 @@
+// End-to-end timings of the surface layer on seeded random patches (integer control points in [-5,5],
+// weights in [1,4] for rational ones): the implicit equation (Bezoutian matrix + determinant) and the
+// certified topology of D = 0 in [0,1]^2 (CGAL arrangement of D and the box lines) with lifting.
+// Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -Iinclude benchmark/surface_benchmark.cpp -lmpfi -lmpfr -lgmp
+// Run:   ./a.out [max_total_degree_for_topology=40] [patches_per_case=3]
+#include <bezoutian/Surface_intersection.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <random>
+
+using namespace bezoutian;
+using Q = Rational;
+using Patch = Rational_bezier_patch<>;
+
+static Patch random_patch(std::mt19937& g, int m, int n, bool rational) {
+  std::uniform_int_distribution<int> c(-5, 5), w(1, 4);
+  std::vector<std::vector<Patch::Point>> p(m + 1, std::vector<Patch::Point>(n + 1));
+  std::vector<std::vector<Q>> wt(m + 1, std::vector<Q>(n + 1, Q(1)));
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j) {
+      p[i][j] = {Q(c(g)), Q(c(g)), Q(c(g))};
+      if (rational) wt[i][j] = Q(w(g));
+    }
+  return Patch(p, wt);
+}
+
+int main(int argc, char** argv) {
+  const int max_degree = argc > 1 ? std::atoi(argv[1]) : 40;
+  const int count = argc > 2 ? std::atoi(argv[2]) : 3;
+  std::mt19937 g(20261122);
+  std::cout << "case  kind  size  total_degree  implicit[s]  topology+lifting[s]  components  singular\n";
+  for (auto mn : std::vector<std::pair<int, int>>{{2, 2}, {3, 2}, {3, 3}})
+    for (bool rational : {false, true})
+      for (bool self : {true, false})
+        for (int k = 0; k < count; ++k) {
+          Patch a = random_patch(g, mn.first, mn.second, rational), b = random_patch(g, mn.first, mn.second, rational);
+          auto t0 = std::chrono::steady_clock::now();
+          Implicit_equation e = self ? self_intersection_equation(a) : intersection_equation(a, b);
+          const double ti = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          std::cout << "(" << mn.first << "," << mn.second << ") " << (rational ? "rational " : "polynomial ")
+                    << (self ? "self " : "pair ") << e.matrix.size() << " " << e.total_degree() << " " << ti;
+          if (e.total_degree() > max_degree) {
+            std::cout << "  (topology skipped: total degree above " << max_degree << ")\n";
+            continue;
+          }
+          t0 = std::chrono::steady_clock::now();
+          Surface_intersection_options o;
+          Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
+          const double tt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          std::cout << " " << tt << " " << L.topology.components.size() << " " << L.topology.number_of_singular_points()
+                    << "\n";
+        }
+}
