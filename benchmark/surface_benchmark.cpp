@@ -40,9 +40,9 @@ int main(int argc, char** argv) {
           Implicit_equation e = self ? self_intersection_equation(a) : intersection_equation(a, b);
           const double ti = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           std::cout << "(" << mn.first << "," << mn.second << ") " << (rational ? "rational " : "polynomial ")
-                    << (self ? "self " : "pair ") << e.matrix.size() << " " << e.total_degree() << " " << ti;
+                    << (self ? "self " : "pair ") << e.matrix.size() << " " << e.total_degree() << " " << ti << std::flush;
           if (e.total_degree() > max_degree) {
-            std::cout << "  (topology skipped: total degree above " << max_degree << ")\n";
+            std::cout << "  (topology skipped: total degree above " << max_degree << ")" << std::endl;
             continue;
           }
           t0 = std::chrono::steady_clock::now();
@@ -50,6 +50,6 @@ int main(int argc, char** argv) {
           Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
           const double tt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           std::cout << " " << tt << " " << L.topology.components.size() << " " << L.topology.number_of_singular_points()
-                    << "\n";
+                    << std::endl;
         }
 }
