@@ -150,7 +150,8 @@ class Algebraic_real {
 
   /// Exact comparison: -1, 0 or +1 as *this <, ==, > other.
   /// Refines both intervals against each other's ends and by bisection;
-  /// equality is decided by a gcd of the defining polynomials (CGAL::gcd),
+  /// equality is decided by a gcd of the defining polynomials (certified
+  /// multi-modular gcd, internal/bernstein_descartes_gcd.h),
   /// after which both numbers share the smaller defining polynomial.
   int compare(const Algebraic_real& other) const {
     if (rep_ == other.rep_) return 0;
@@ -185,13 +186,14 @@ class Algebraic_real {
         if (s == 0) continue;
       }
       // Now both isolating intervals are the same I = (lo, hi).
+      if (a.c == b.c || a.poly == b.poly) return 0;  // I holds only one root of that polynomial
       if (!gcd_done && round >= 6) {
         gcd_done = true;
-        Polynomial_1<Integer> h = internal::canonical_integer(CGAL::gcd(a.poly, b.poly));
-        if (h.degree() >= 1) {
+        auto hc = std::make_shared<const internal::Mpz_vector>(internal::gcd_of(*a.c, *b.c));
+        if (hc->size() >= 2) {
           // h divides both defining polynomials, so it has at most one root in
           // I, which is then both numbers; equality iff h changes sign on I.
-          auto hc = std::make_shared<const internal::Mpz_vector>(internal::coefficients_of(h));
+          const Polynomial_1<Integer> h = internal::polynomial_of(*hc);
           const int sl = internal::sign_at(*hc, a.lo), sh = internal::sign_at(*hc, a.hi);
           if (sl != 0 && sh != 0 && sl != sh) {
             a.set_interval(h, hc, a.lo, a.hi, sl);
@@ -244,9 +246,8 @@ class Algebraic_real {
       if (s != 0) return s;
       if (round >= 2 && !gcd_done) {
         gcd_done = true;
-        Polynomial_1<Integer> h = internal::canonical_integer(CGAL::gcd(F, r.poly));
-        if (h.degree() >= 1) {
-          internal::Mpz_vector hc = internal::coefficients_of(h);
+        const internal::Mpz_vector hc = internal::gcd_of(fc, *r.c);
+        if (hc.size() >= 2) {
           const int sl = internal::sign_at(hc, r.lo), sh = internal::sign_at(hc, r.hi);
           if (sl != 0 && sh != 0 && sl != sh) return 0;
         }

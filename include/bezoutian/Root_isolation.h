@@ -1,9 +1,9 @@
 // Certified isolation of the real roots of a univariate polynomial, with
 // exact multiplicities, on a closed interval [a,b] or on the whole real line.
 //
-// Algorithm: square-free factorization f = c prod g_i^(m_i)
-// (CGAL::square_free_factorize_up_to_constant_factor, Yun's algorithm with
-// modular gcds); for each factor, Descartes' rule of signs in the Bernstein
+// Algorithm: square-free factorization f = c prod g_i^(m_i) (a modular
+// square-free certificate, else Yun's algorithm with certified multi-modular
+// gcds, internal/bernstein_descartes_gcd.h); for each factor, Descartes' rule of signs in the Bernstein
 // basis on [a,b] with exact integer de Casteljau subdivision and a proved
 // floating-point filter (internal/bernstein_descartes.h); rational roots are
 // made exact (internal/bernstein_descartes_support.h). See doc/algebraic_numbers.md.

@@ -331,6 +331,36 @@ TEST_CASE("exact and filtered subdivision agree", "[root_isolation]") {
   }
 }
 
+TEST_CASE("modular gcd and square-free factorization agree with CGAL", "[root_isolation]") {
+  for (int k = 0; k < 30; ++k) {
+    const P g = random_polynomial(1 + k % 7, 10 + k);
+    const P a = g * random_polynomial(5 + k % 11, 30), b = g * random_polynomial(3 + k % 5, 60);
+    const P ours = internal::gcd_of(a, b);
+    const P theirs = internal::canonical_integer(CGAL::gcd(a, b));
+    CHECK(ours == theirs);
+    CHECK(ours.degree() >= g.degree());
+    // f = g1 g2^2 g3^3 with random (almost surely square-free, coprime) g_i
+    const P g1 = random_polynomial(1 + k % 5, 20), g2 = random_polynomial(1 + k % 4, 15),
+            g3 = random_polynomial(1 + k % 3, 10);
+    const P f = g1 * g2 * g2 * g3 * g3 * g3;
+    const auto fac = internal::square_free_factors(f);
+    std::vector<std::pair<P, int>> cg;
+    CGAL::square_free_factorize_up_to_constant_factor(f, std::back_inserter(cg));
+    P prod(Integer(1));
+    for (const auto& fm : fac) prod *= CGAL::ipower(fm.first, fm.second);
+    CHECK(internal::canonical_integer(prod) == internal::canonical_integer(f));
+    std::size_t nontrivial = 0;
+    for (const auto& fm : cg)
+      if (fm.first.degree() >= 1) {
+        ++nontrivial;
+        bool found = false;
+        for (const auto& m : fac) found = found || (m.second == fm.second && m.first == internal::canonical_integer(fm.first));
+        CHECK(found);
+      }
+    CHECK(fac.size() == nontrivial);
+  }
+}
+
 TEST_CASE("rational roots come out exact", "[root_isolation]") {
   // one square-free factor mixing rational and irrational roots
   const P f = lin(7, 3) * quad(1, 0, -5) * lin(13, -4) * lin(123456789, 98765432) * (x_power(3) - x_power(1) - P(Integer(1)));

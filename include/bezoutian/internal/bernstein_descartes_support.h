@@ -9,6 +9,7 @@
 
 #include <bezoutian/number_types.h>
 #include <bezoutian/internal/bernstein_descartes.h>
+#include <bezoutian/internal/bernstein_descartes_gcd.h>
 
 #include <mpfr.h>
 
@@ -440,18 +441,22 @@ inline bool is_square_free_modular(const Mpz_vector& c) {
 /// Square-free factorization f = c prod g_i^(m_i) with canonical (primitive,
 /// positive leading coefficient) pairwise coprime square-free g_i of degree >= 1.
 /// Square-free inputs are recognised by a modular certificate; the others go
-/// through CGAL::square_free_factorize_up_to_constant_factor (Yun).
+/// through Yun's algorithm with certified modular gcds (bernstein_descartes_gcd.h).
 inline std::vector<std::pair<Polynomial_1<Integer>, int>> square_free_factors(const Polynomial_1<Integer>& f) {
-  std::vector<std::pair<Polynomial_1<Integer>, int>> raw, out;
+  std::vector<std::pair<Polynomial_1<Integer>, int>> out;
   if (CGAL::is_zero(f) || f.degree() < 1) return out;
-  if (is_square_free_modular(coefficients_of(f))) {
+  const Mpz_vector c = coefficients_of(f);
+  if (is_square_free_modular(c)) {
     out.emplace_back(canonical_integer(f), 1);
     return out;
   }
-  CGAL::square_free_factorize_up_to_constant_factor(f, std::back_inserter(raw));
-  for (auto& pm : raw)
-    if (!CGAL::is_zero(pm.first) && pm.first.degree() >= 1) out.emplace_back(canonical_integer(pm.first), pm.second);
+  for (const auto& gm : square_free_factorization(c)) out.emplace_back(polynomial_of(gm.first), gm.second);
   return out;
+}
+
+/// gcd of two nonzero integer polynomials: primitive, positive leading coefficient.
+inline Polynomial_1<Integer> gcd_of(const Polynomial_1<Integer>& f, const Polynomial_1<Integer>& g) {
+  return polynomial_of(gcd_of(coefficients_of(f), coefficients_of(g)));
 }
 
 }  // namespace internal
