@@ -280,7 +280,7 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--svg", o->svg, "write the picture of the locus in the (u,v) plane");
   sub->add_option("--obj", o->obj, "write the patch mesh and the 3D double curve");
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
-  sub->add_option("--max-degree", o->max_degree, "largest total degree of D for the certified topology (default 40)");
+  sub->add_option("--max-degree", o->max_degree, "largest total degree of D for the certified topology (default 16)");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o, domain] {
     Patch p = patch_of(o->file_a, 0);

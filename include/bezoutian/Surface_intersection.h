@@ -37,7 +37,7 @@ struct Surface_intersection_options {
   /// The certified topology uses CGAL's whole-plane curve analysis, whose cost explodes with the degree;
   /// above this total degree of D the topology is not attempted (Surface_locus::topology_computed == false)
   /// instead of running for hours. See doc/surface_intersection.md for measured times.
-  int max_total_degree_for_topology = 40;
+  int max_total_degree_for_topology = 16;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
