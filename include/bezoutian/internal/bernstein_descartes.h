@@ -188,9 +188,10 @@ class Bernstein_converter {
 /// Exact de Casteljau subdivision at 1/2 without divisions: with
 /// c^(j)_i = c^(j-1)_i + c^(j-1)_(i+1) (so c^(j)_i = 2^j b^(j)_i), the halves
 /// are left_j = 2^(n-j) c^(j)_0 and right_k = 2^k c^(n-k)_k, both scaled by 2^n.
-inline void de_casteljau_exact(const Mpz_vector& b, Mpz_vector& left, Mpz_vector& right) {
+inline void de_casteljau_exact(const Mpz_vector& b, Mpz_vector& left, Mpz_vector& right, Mpz_vector& w) {
   const int n = static_cast<int>(b.size()) - 1;
-  Mpz_vector w(b);
+  w.resize(n + 1);
+  for (int i = 0; i <= n; ++i) mpz_set(w[i].get(), b[i].get());
   left.resize(n + 1);
   right.resize(n + 1);
   mpz_mul_2exp(left[0].get(), w[0].get(), static_cast<mp_bitcnt_t>(n));
@@ -238,11 +239,12 @@ inline bool float_from_exact(const Mpz_vector& e, Float_bernstein& out) {
 /// most u*M + 2^-1075 to the error (u = 2^-53, M = max |b|, averages never
 /// exceed M(1+u)), so err_child <= err + n (2^-52 M + 2^-1074); the children are
 /// rescaled by exact powers of two.
-inline void de_casteljau_float(const Float_bernstein& in, Float_bernstein& left, Float_bernstein& right) {
+inline void de_casteljau_float(const Float_bernstein& in, Float_bernstein& left, Float_bernstein& right,
+                               std::vector<double>& w) {
   const int n = static_cast<int>(in.b.size()) - 1;
   double M = 0;
   for (double x : in.b) M = std::max(M, std::fabs(x));
-  std::vector<double> w(in.b);
+  w.assign(in.b.begin(), in.b.end());
   left.b.resize(n + 1);
   right.b.resize(n + 1);
   left.b[0] = w[0];
@@ -401,7 +403,7 @@ class Bernstein_descartes_isolator {
         if (!cur->child[0]) {
           auto l = std::make_shared<Exact_node>(), r = std::make_shared<Exact_node>();
           l->d = r->d = cur->d + 1;
-          de_casteljau_exact(cur->b, l->b, r->b);
+          de_casteljau_exact(cur->b, l->b, r->b, exact_work_);
           stats_.exact_nodes += 2;
           cur->child[0] = l;
           cur->child[1] = r;
@@ -471,7 +473,7 @@ class Bernstein_descartes_isolator {
     }
     int s_mid = 2;
     if (fsrc) {
-      de_casteljau_float(*fsrc, left.f, right.f);
+      de_casteljau_float(*fsrc, left.f, right.f, float_work_);
       left.has_float = right.has_float = true;
       const double v = left.f.b[n_];
       if (v > left.f.err) s_mid = 1;
@@ -502,6 +504,8 @@ class Bernstein_descartes_isolator {
   std::vector<Node> stack_;
   Isolation_statistics stats_;
   bool float_filter_ = true;
+  Mpz_vector exact_work_;          // reused buffers (no allocation per node)
+  std::vector<double> float_work_;
 };
 
 }  // namespace internal

@@ -164,13 +164,16 @@ inline bool specialization_proves_no_repeated_v_factor(const Dense_polynomial_en
 }
 
 /// Content of a bivariate polynomial with respect to v (gcd in Z[u] of its
-/// coefficients, up to sign), and the division of every coefficient by it.
+/// coefficients, integer content included, up to sign), and the division of
+/// every coefficient by it. The gcd may stop early only at a unit: a constant
+/// gcd g of the first coefficients is their integer content, and the remaining
+/// coefficients may still share only a proper factor of g.
 inline Polynomial_1<Integer> v_content(const Polynomial_2<Integer>& D) {
   Polynomial_1<Integer> g(0);
   for (const Polynomial_1<Integer>& c : D) {
     if (CGAL::is_zero(c)) continue;
     g = CGAL::is_zero(g) ? c : CGAL::gcd(g, c);
-    if (g.degree() == 0) return g;
+    if (g.degree() == 0 && CGAL::abs(g[0]) == 1) return g;
   }
   return g;
 }
@@ -180,6 +183,13 @@ inline Polynomial_2<Integer> divide_v_coefficients(const Polynomial_2<Integer>& 
   return Polynomial_2<Integer>(rows.begin(), rows.end());
 }
 
+/// The square-free part of P computed by CGAL's generic bivariate gcd: correct
+/// but slow; the last resort of `square_free_part_of_primitive`.
+inline Polynomial_2<Integer> generic_square_free_part(const Polynomial_2<Integer>& P) {
+  typename CGAL::Polynomial_traits_d<Polynomial_2<Integer>>::Make_square_free make_square_free;
+  return make_square_free(P);
+}
+
 /// The square-free part of P, where P has content 1 with respect to v and
 /// integer content 1 and deg_v P >= 1 (result up to sign).
 ///
@@ -187,22 +197,42 @@ inline Polynomial_2<Integer> divide_v_coefficients(const Polynomial_2<Integer>& 
 /// so lc_v(T) = L. Modulo p at u = x with L(x) != 0, f = P(x,v) has square-free
 /// part f / gcd(f, f') of degree <= deg_v S; equality holds for all but finitely
 /// many (x, p), and then f / gcd(f, f') = T(x,v) (same leading coefficient
-/// L(x)). Windows of deg_u L + deg_u P + 1 consecutive x where all degrees agree
-/// give T mod p by interpolation; primes of lower degree are discarded and a
-/// higher degree restarts the reconstruction. When the Chinese remainder is
-/// stable, S_c = primitive part of T is certified by two exact divisions:
-/// G = P / S_c and G | dP/dv. Then G divides gcd(P, dP/dv) = P/S, so S | S_c,
-/// and deg_v S_c <= deg_v S (degree of a modular image), so S_c = +-S.
+/// L(x); lc_v(S)(x) != 0 since it divides L(x)). Windows of
+/// deg_u L + deg_u P + 1 consecutive x where all degrees agree give T mod p by
+/// interpolation; primes of lower degree are discarded and a higher degree
+/// restarts the reconstruction. The candidate S_c = primitive part of the
+/// Chinese remainder is certified by two exact divisions: G = P / S_c and
+/// G | dP/dv. Then G divides gcd(P, dP/dv) = P/S, so S | S_c, and
+/// deg_v S_c <= deg_v S (degree of a modular image), so S_c = +-S.
+///
+/// When to certify: when the reconstruction is stable over one more prime and
+/// has changed since the last failed certification (a failed candidate is never
+/// tried twice), and once the product of the primes exceeds twice a proved
+/// bound on the coefficients of T. Bound: with the Kronecker substitution
+/// v -> x^K, K = deg_u P + 1, P, S and P/S become univariate polynomials with
+/// kron(P) = kron(S) kron(P/S), of degree n <= K (deg_v P + 1) - 1. Mahler's
+/// measure is multiplicative and ||h||_1 <= 2^deg(h) M(h), M(h) <= ||h||_2, so
+/// ||T||_inf <= ||lc_v(P/S)||_1 ||S||_1 <= ||P/S||_1 ||S||_1 <= 2^n ||P||_2
+/// <= 2^n ||P||_1. Past the bound a failed certification proves that the
+/// current degree is below deg_v S (all images with the right degree are
+/// right); only a prime of higher degree can then help. If none comes within
+/// a generous number of further primes, CGAL's generic algorithm answers.
 inline Polynomial_2<Integer> square_free_part_of_primitive(const Polynomial_2<Integer>& P2) {
   const Dense_polynomial_entry P = dense_entry(P2), Pv = derivative_v(P);
   const Polynomial_1<Integer>& L = P2.lcoeff();
   const std::size_t N = std::size_t(L.degree() + P.du) + 1;
+  CGAL::Gmpz limit = one_norm(P);
+  mpz_mul_2exp(limit.mpz(), limit.mpz(), std::size_t(P.du + 1) * std::size_t(P.dv + 1) + 1); // fresh object
+  // Word primes exceed 2^61: enough primes to pass the bound, and as many again
+  // to meet a prime of the right degree after unlucky ones.
+  const std::size_t max_primes = 2 * (mpz_sizeinbase(limit.mpz(), 2) / 61 + 1) + 64;
   Incremental_chinese_remainder crt;
   int dstar = -1;
+  bool tried = false; // the current reconstruction failed the certification
   std::vector<u64> node, inv, work, f, vals, res;
   std::vector<Modular_polynomial> images(N);
   Modular_polynomial g, q, r;
-  for (std::size_t ip = 0; ip < 4096; ++ip) {
+  for (std::size_t ip = 0; ip < max_primes; ++ip) {
     const Montgomery_modulus M(word_prime(ip));
     const std::vector<u64> rp = residues(P, M);
     int dp = -1;
@@ -228,6 +258,7 @@ inline Polynomial_2<Integer> square_free_part_of_primitive(const Polynomial_2<In
     if (dp > dstar) {
       crt = Incremental_chinese_remainder(N * m);
       dstar = dp;
+      tried = false;
     }
     vals.assign(N * m, 0);
     for (std::size_t j = 0; j < N; ++j)
@@ -238,22 +269,21 @@ inline Polynomial_2<Integer> square_free_part_of_primitive(const Polynomial_2<In
       for (std::size_t k = 0; k < N; ++k) res[l * N + k] = M.from_montgomery(vals[k * m + l]);
     }
     const bool stable = crt.add(M.modulus(), res);
-    if (!stable || crt.number_of_primes() < 2) continue;
-    // Candidate S_c = primitive part of T.
+    if (!stable) tried = false;
+    if (tried || crt.number_of_primes() < 2 || !(stable || crt.product() > limit)) continue;
+    // Candidate S_c = primitive part of T (content in Z[u], integer content included).
     std::vector<CGAL::Gmpz> c(crt.size());
     for (std::size_t i = 0; i < c.size(); ++i) c[i] = crt.symmetric(i);
     Polynomial_2<Integer> T = to_polynomial_2(dense_from_coefficients(c, N - 1, m - 1));
+    tried = true;
+    if (CGAL::is_zero(T)) continue;
     const Polynomial_1<Integer> content = v_content(T);
-    if (!CGAL::is_zero(content)) T = divide_v_coefficients(T, content);
-    Integer ic(0);
-    for (const Polynomial_1<Integer>& a : T)
-      for (const Integer& x : a) mpz_gcd(ic.mpz(), ic.mpz(), x.mpz());
-    if (!CGAL::is_zero(ic) && ic != 1) T = divide_v_coefficients(T, Polynomial_1<Integer>(ic));
+    if (content != Polynomial_1<Integer>(1)) T = divide_v_coefficients(T, content);
     const Dense_polynomial_entry Sc = dense_entry(T);
     Dense_polynomial_entry G, H;
-    if (!Sc.is_zero() && exact_quotient(P, Sc, G) && exact_quotient(Pv, G, H)) return T;
+    if (exact_quotient(P, Sc, G) && exact_quotient(Pv, G, H)) return T;
   }
-  throw std::runtime_error("square_free_part_of_primitive: no certified result (should not happen)");
+  return generic_square_free_part(P2);
 }
 
 } // namespace internal
