@@ -1,0 +1,692 @@
+// Certified intersection of two rational Bezier curves (plane or space) on [0,1] x [0,1] (du-1989 ch. 4).
+#ifndef BEZOUTIAN_CURVE_INTERSECTION_H
+#define BEZOUTIAN_CURVE_INTERSECTION_H
+
+#include <bezoutian/Algebraic_real.h>
+#include <bezoutian/Bezout_matrix.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/Goldman_resolvent.h>
+#include <bezoutian/Rational_bezier_curve.h>
+#include <bezoutian/Root_isolation.h>
+#include <bezoutian/Weight_validity.h>
+#include <bezoutian/internal/curve_intersection_support.h>
+
+#include <CGAL/Polynomial.h>
+#include <CGAL/Polynomial_traits_d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace bezoutian {
+
+/// How the eliminant polynomials R(s), T(t) are computed. Every strategy is followed by the same certified
+/// pairing (subresultant inversion, exact sign decisions), so all of them return identical answers.
+enum class Curve_intersection_method {
+  default_method,  ///< R = Res_t(F1,F2), T = Res_s(F1,F2) (subresultant sequence; 3D: a combination with F3)
+  projection,      ///< R = f2(X1,Y1,W1): implicit equation of curve 2 (bezout_implicit_equation, du-1989 eq. 4.1)
+                   ///< on curve 1, and symmetrically T (planar curves; space curves use the default)
+  resolvent        ///< space curves with a curve of degree <= 3: R = gcd of Goldman's quadrics (du-1989 eq. 4.2/4.3)
+                   ///< of that curve evaluated on the other one; otherwise as projection
+};
+
+/// Kind of an isolated intersection.
+enum class Curve_intersection_kind { transversal, tangent, endpoint };
+
+inline const char* to_string(Curve_intersection_kind k) {
+  return k == Curve_intersection_kind::transversal ? "transversal"
+                                                   : (k == Curve_intersection_kind::tangent ? "tangent" : "endpoint");
+}
+
+/// One isolated intersection C1(s) = C2(t), s, t in [0,1] exact algebraic numbers.
+struct Curve_intersection_point {
+  Algebraic_real s, t;
+  /// 1 for a transversal crossing; for tangencies the multiplicity of the root of the eliminants
+  /// (min over R(s) and T(t)), which equals the intersection multiplicity for a generic projection.
+  int multiplicity = 1;
+  Curve_intersection_kind kind = Curve_intersection_kind::transversal;
+  /// Tangent directions parallel (decided exactly; also reported for endpoint hits).
+  bool tangent = false;
+};
+
+/// A common piece: C1([s0,s1]) = C2([t0,t1]) with C1(s0) = C2(t0) (t0 > t1 when the orientations differ).
+struct Curve_overlap {
+  Algebraic_real s0, s1, t0, t1;
+};
+
+/// Result of intersect_curves.
+struct Curve_intersection_result {
+  std::vector<Curve_intersection_point> points;  ///< sorted by s, then t
+  std::vector<Curve_overlap> overlaps;
+};
+
+namespace internal {
+
+template <int D>
+class Curve_intersection_engine {
+  using P1 = Ci_poly1;
+  using P2 = Ci_poly2;
+  using Curve = Rational_bezier_curve<Rational, D>;
+  using Form = std::array<P1, D + 1>;
+
+ public:
+  Curve_intersection_engine(const Curve& a, const Curve& b, Curve_intersection_method m)
+      : c1_(a), c2_(b), method_(m), H1_(integer_power_form(a)), H2_(integer_power_form(b)) {}
+
+  Curve_intersection_result run() {
+    check_no_pole(c1_);
+    check_no_pole(c2_);
+    Curve_intersection_result res;
+    const bool k1 = is_constant(H1_), k2 = is_constant(H2_);
+    if (k1 || k2) {
+      constant_case(k1, k2, res);
+      return res;
+    }
+    std::vector<P2> F;
+    for (int k = 1; k <= D; ++k) F.push_back(cross_term(H1_[k], H2_[0], H2_[k], H1_[0]));
+    solve_system(F, res, /*allow_overlap=*/true);
+    sort_points(res);
+    return res;
+  }
+
+  /// Self-intersections of c1 (c1 == c2): the divided differences F_k(s,t) / (s - t) (exact division, the diagonal
+  /// s = t removed), solved like two curves; pairs with s < t are kept.
+  Curve_intersection_result run_self() {
+    check_no_pole(c1_);
+    Curve_intersection_result res, all;
+    if (is_constant(H1_)) {
+      res.overlaps.push_back({Algebraic_real(0), Algebraic_real(1), Algebraic_real(0), Algebraic_real(1)});
+      return res;
+    }
+    const P2 diag(P1(Integer(0), Integer(1)), P1(Integer(-1)));  // s - t
+    std::vector<P2> F;
+    for (int k = 1; k <= D; ++k) F.push_back(CGAL::integral_division(cross_term(H1_[k], H1_[0], H1_[k], H1_[0]), diag));
+    std::vector<P2> G;
+    for (const P2& f : F)
+      if (!CGAL::is_zero(f)) G.push_back(f);
+    if (G.size() < 2) throw Error("self_intersections: the curve is a straight line traversed non-monotonically or degenerate");
+    solve_system(G, all, true);
+    for (const auto& p : all.points)
+      if (p.s < p.t) res.points.push_back(p);
+    for (const auto& o : all.overlaps)
+      if (o.s0 < o.t0 || o.s1 < o.t1) res.overlaps.push_back(o);
+    sort_points(res);
+    return res;
+  }
+
+ private:
+  // ---------------------------------------------------------------- degenerate (constant) curves
+  static bool is_constant(const Form& H) {
+    const Integer w0 = H[0][0];  // W(0) != 0 (no pole on [0,1])
+    for (int k = 1; k <= D; ++k)
+      if (!CGAL::is_zero(H[k] * P1(w0) - H[0] * P1(H[k][0]))) return false;
+    return true;
+  }
+
+  void constant_case(bool k1, bool k2, Curve_intersection_result& res) const {
+    const auto p1 = point_at<D>(H1_, Rational(0)), p2 = point_at<D>(H2_, Rational(0));
+    if (k1 && k2) {
+      if (p1 == p2) res.overlaps.push_back({Algebraic_real(0), Algebraic_real(1), Algebraic_real(0), Algebraic_real(1)});
+      return;
+    }
+    std::vector<Algebraic_real> r;
+    if (k1) {
+      invert_point<D>(H2_, p1, r);
+      for (const auto& t : r) res.overlaps.push_back({Algebraic_real(0), Algebraic_real(1), t, t});
+    } else {
+      invert_point<D>(H1_, p2, r);
+      for (const auto& s : r) res.overlaps.push_back({s, s, Algebraic_real(0), Algebraic_real(1)});
+    }
+  }
+
+  // ---------------------------------------------------------------- eliminants
+  struct Elimination {
+    P2 G1, G2;       // the pair whose subresultants give the inversion
+    P1 R, S10, S11;  // Res_t(G1,G2) and the first subresultant S_1 = S11 t + S10 (w.r.t. t)
+    bool ok = false;
+  };
+
+  static Elimination eliminate(const P2& G1, const P2& G2) {
+    Elimination e;
+    e.G1 = G1;
+    e.G2 = G2;
+    if (t_degree(G1) < 1 || t_degree(G2) < 1) return e;
+    std::vector<P2> sres;
+    typename CGAL::Polynomial_traits_d<P2>::Polynomial_subresultants()(G1, G2, std::back_inserter(sres));
+    if (sres.empty() || CGAL::is_zero(sres[0])) return e;
+    e.R = sres[0][0];
+    const P2& S1 = sres.size() > 1 ? sres[1] : (t_degree(G1) <= t_degree(G2) ? G1 : G2);
+    e.S10 = t_degree(S1) >= 0 ? P1(S1[0]) : P1(0);
+    e.S11 = t_degree(S1) >= 1 ? P1(S1[1]) : P1(0);
+    Integer c(0);  // remove the common content of S10 and S11 (only their ratio matters)
+    for (const P1* q : {&e.S10, &e.S11})
+      for (int i = 0; i <= q->degree(); ++i) c = CGAL::gcd(c, (*q)[i]);
+    if (c > 1) {
+      e.S10 = CGAL::integral_division(e.S10, P1(c));
+      e.S11 = CGAL::integral_division(e.S11, P1(c));
+    }
+    e.ok = true;
+    return e;
+  }
+
+  // Pairs of F to eliminate: F1,F2 first; in 3D combinations with F3 if F1,F2 share a component.
+  static std::vector<std::pair<P2, P2>> candidate_pairs(const std::vector<P2>& F) {
+    std::vector<std::pair<P2, P2>> c;
+    c.push_back({F[0], F[1]});
+    c.push_back({F[0] + F[1], F[0] + F[1] * P2(2)});
+    if (F.size() == 3) {
+      c.push_back({F[0], F[2]});
+      c.push_back({F[1], F[2]});
+      c.push_back({F[0] + F[2], F[1] - F[2] * P2(2)});
+      c.push_back({F[0] * P2(3) + F[1] + F[2], F[1] + F[2] * P2(5) - F[0]});
+    }
+    return c;
+  }
+
+  // Substitute the homogeneous form H (an affine polynomial f(x,y) of total degree n) : f(X/W, Y/W) W^n.
+  static P1 substitute_affine(const P2& f, const P1& X, const P1& Y, const P1& W) {
+    int n = 0;
+    for (int j = 0; j <= f.degree(); ++j)
+      if (!CGAL::is_zero(f[j])) n = std::max(n, j + f[j].degree());
+    P1 r(0);
+    for (int j = 0; j <= f.degree(); ++j)
+      for (int i = 0; i <= f[j].degree(); ++i)
+        if (!CGAL::is_zero(f[j][i])) r += P1(f[j][i]) * CGAL::ipower(X, i) * CGAL::ipower(Y, j) * CGAL::ipower(W, n - i - j);
+    return r;
+  }
+
+  // R(s) from the strategy (default: the resultant already computed).
+  P1 strategy_R(const Elimination& e, const Form& A, const Form& B) const {
+    if (method_ == Curve_intersection_method::default_method) return e.R;
+    if (method_ == Curve_intersection_method::resolvent && D == 3 && B[0].degree() <= 3 && max_degree(B) <= 3 &&
+        max_degree(B) == 3) {
+      const auto r = goldman_rational_cubic_resolvent(B[1], B[2], B[D == 3 ? 3 : 1], B[0]);
+      P1 g(0);
+      for (const auto* q : {&r.R1, &r.R2, &r.R3}) {
+        P1 v = substitute_quadric(*q, A);
+        g = CGAL::is_zero(g) ? v : (CGAL::is_zero(v) ? g : P1(CGAL::gcd(g, v)));
+      }
+      if (!CGAL::is_zero(g)) return g;
+      return e.R;
+    }
+    if (D == 2) {
+      const P2 f = bezout_implicit_equation(B[1], B[2], B[0]);
+      const P1 r = substitute_affine(f, A[1], A[2], A[0]);
+      if (!CGAL::is_zero(r)) return r;
+    }
+    return e.R;
+  }
+
+  static int max_degree(const Form& H) {
+    int n = 0;
+    for (const auto& h : H) n = std::max(n, h.degree());
+    return n;
+  }
+
+  template <class Q3>
+  static P1 substitute_quadric(const Q3& q, const Form& A) {
+    // q is a polynomial in (x,y,z) of total degree <= 2: sum c x^a y^b z^c W^(2-a-b-c)
+    P1 r(0);
+    const P1* v[3] = {&A[1], &A[2], &A[D == 3 ? 3 : 1]};
+    for (int c = 0; c <= q.degree(); ++c)
+      for (int b = 0; b <= q[c].degree(); ++b)
+        for (int a = 0; a <= q[c][b].degree(); ++a) {
+          const Integer co = q[c][b][a];
+          if (CGAL::is_zero(co)) continue;
+          r += P1(co) * CGAL::ipower(*v[0], a) * CGAL::ipower(*v[1], b) * CGAL::ipower(*v[2], c) *
+               CGAL::ipower(A[0], 2 - a - b - c);
+        }
+    return r;
+  }
+
+  // ---------------------------------------------------------------- pairing
+  enum { none = -1, unresolved = -2 };
+
+  // For each root a_i of the first variable (outer variable of G is the second one): the index of its unique
+  // partner among roots_b, none, or unresolved (gcd of G1(a_i,.), G2(a_i,.) not of degree 1 / leading terms vanish).
+  static std::vector<int> pair_roots(const Elimination& e, const std::vector<Isolated_root>& ra,
+                                     const std::vector<Isolated_root>& rb) {
+    std::vector<int> out(ra.size(), none);
+    const int d1 = t_degree(e.G1), d2 = t_degree(e.G2);
+    const P1 l1 = e.G1[d1], l2 = e.G2[d2];
+    const Polynomial_1<Rational> S10 = to_rational(e.S10), S11 = to_rational(e.S11);
+    for (std::size_t i = 0; i < ra.size(); ++i) {
+      const Algebraic_real& a = ra[i].root;
+      // subresultants specialize at a when the leading coefficient of the higher-degree polynomial survives
+      const bool lc_ok = d1 == d2 ? (root_sign(a, l1) != 0 || root_sign(a, l2) != 0)
+                                  : root_sign(a, d1 > d2 ? l1 : l2) != 0;
+      const int s11 = lc_ok ? root_sign(a, e.S11) : 0;
+      if (s11 == 0) {
+        out[i] = unresolved;
+        continue;
+      }
+      // b* = -S10(a)/S11(a) is a root of Res_a(G1,G2); sign(b* - c) = -sign(S10 + c S11) * sign(S11)
+      auto cmp = [&](const Rational& c) { return -root_sign(a, S10 + S11 * Polynomial_1<Rational>(c)) * s11; };
+      int found = none;
+      for (std::size_t j = 0; j < rb.size() && found == none; ++j) {
+        const Algebraic_real& b = rb[j].root;
+        if (b.is_rational()) {
+          if (cmp(b.rational_value()) == 0) found = int(j);
+        } else if (cmp(b.lower()) > 0 && cmp(b.upper()) < 0) {
+          found = int(j);
+        }
+      }
+      out[i] = found;
+    }
+    return out;
+  }
+
+  static Polynomial_1<Rational> to_rational(const P1& f) {
+    std::vector<Rational> c;
+    for (int i = 0; i <= f.degree(); ++i) c.push_back(Rational(f[i]));
+    return Polynomial_1<Rational>(c.begin(), c.end());
+  }
+
+  // ---------------------------------------------------------------- the system F_k(s,t) = 0
+  // Linearly independent combinations of the F_k tried in turn (the first ones are the F_k themselves); a pair of
+  // them with a vanishing resultant shares a component, which a combination avoids unless all F_k share it.
+  static std::vector<std::vector<P2>> candidate_systems(const std::vector<P2>& F) {
+    std::vector<std::vector<P2>> c;
+    if (F.size() == 2) {
+      c.push_back({F[0], F[1]});
+      c.push_back({F[0] + F[1], F[0] + F[1] * P2(2)});
+      c.push_back({F[0] * P2(3) - F[1], F[0] + F[1] * P2(5)});
+    } else {
+      c.push_back({F[0], F[1], F[2]});
+      c.push_back({F[1], F[2], F[0]});
+      c.push_back({F[2], F[0], F[1]});
+      c.push_back({F[0] + F[1] + F[2], F[0] - F[1] + F[2] * P2(2), F[0] + F[1] * P2(3) - F[2]});
+      c.push_back({F[0] * P2(2) + F[1] - F[2], F[0] + F[1] * P2(5) + F[2] * P2(3), F[0] - F[1] * P2(4) + F[2]});
+    }
+    return c;
+  }
+
+  // Pairing of the roots `ra` of the first variable with the roots of the second one (main list `rb`): a root a_i
+  // is paired through every elimination pair (G1, G_m), m = 2 (.. 3 in space); the partner b* = -S10/S11 (a_i) is
+  // located among the roots `loc[m]` of Res_a(G1, G_m) (of which it is a root) and all located roots must be equal
+  // (then all G vanish at (a_i, b*)). The result is an index into rb, none or unresolved.
+  static std::vector<int> pair_all(const std::vector<Elimination>& e, const std::vector<std::vector<Isolated_root>>& loc,
+                                   const std::vector<Isolated_root>& ra, const std::vector<Isolated_root>& rb,
+                                   bool rb_is_loc0) {
+    std::vector<std::vector<int>> q;
+    for (std::size_t m = 0; m < e.size(); ++m) q.push_back(pair_roots(e[m], ra, loc[m]));
+    std::vector<int> out(ra.size(), none);
+    for (std::size_t i = 0; i < ra.size(); ++i) {
+      // "none" from one resolved pair proves that no partner exists in [0,1]
+      bool unres = false, nothing = false;
+      for (const auto& v : q) unres = unres || v[i] == unresolved;
+      for (const auto& v : q) nothing = nothing || v[i] == none;
+      if (nothing) continue;
+      if (unres) {
+        out[i] = unresolved;
+        continue;
+      }
+      const Algebraic_real& b = loc[0][q[0][i]].root;
+      bool same = true;
+      for (std::size_t m = 1; m < q.size(); ++m) same = same && loc[m][q[m][i]].root == b;
+      if (!same) continue;
+      if (rb_is_loc0) {
+        out[i] = q[0][i];
+        continue;
+      }
+      for (std::size_t j = 0; j < rb.size(); ++j)
+        if (rb[j].root == b) out[i] = int(j);
+    }
+    return out;
+  }
+
+  static std::vector<Isolated_root> roots01(const P1& f) {
+    std::vector<Isolated_root> r = isolate_real_roots(f, Rational(0), Rational(1));
+    separate_roots(r);
+    return r;
+  }
+
+  static P1 primitive(const P1& f) {
+    P1 g = f;
+    g = CGAL::canonicalize(g);
+    return g;
+  }
+
+  void solve_system(const std::vector<P2>& F, Curve_intersection_result& res, bool allow_overlap) {
+    std::vector<Elimination> es, et;
+    bool ok = false;
+    for (const auto& G : candidate_systems(F)) {
+      es.clear();
+      et.clear();
+      ok = true;
+      for (std::size_t m = 1; m < G.size() && ok; ++m) {
+        es.push_back(eliminate(G[0], G[m]));
+        ok = es.back().ok && t_degree(swap_variables(G[0])) >= 1 && t_degree(swap_variables(G[m])) >= 1;
+        if (ok) {
+          et.push_back(eliminate(swap_variables(G[0]), swap_variables(G[m])));
+          ok = et.back().ok;
+        }
+      }
+      if (ok) break;
+    }
+    if (!ok) {
+      if (!allow_overlap) throw Error("intersect_curves: the reduced system still has a common component");
+      overlap_case(F, res);
+      return;
+    }
+    // Location lists: roots in [0,1] of every resultant; main lists: the strategy's eliminant (2D default: the same
+    // polynomial as the first location list; space: the gcd of the resultants).
+    std::vector<std::vector<Isolated_root>> ls, lt;
+    for (const auto& e : es) ls.push_back(roots01(primitive(e.R)));
+    for (const auto& e : et) lt.push_back(roots01(primitive(e.R)));
+    const bool plain = method_ == Curve_intersection_method::default_method || D == 3 && method_ == Curve_intersection_method::projection;
+    std::vector<Isolated_root> rs, rt;
+    if (plain && es.size() == 1) {
+      rs = ls[0];
+      rt = lt[0];
+    } else {
+      P1 R = strategy_R(es[0], H1_, H2_), T = strategy_R(et[0], H2_, H1_);
+      for (std::size_t m = 1; m < es.size(); ++m) {
+        if (method_ != Curve_intersection_method::resolvent || CGAL::is_zero(R)) R = CGAL::gcd(R, es[m].R);
+        if (method_ != Curve_intersection_method::resolvent || CGAL::is_zero(T)) T = CGAL::gcd(T, et[m].R);
+      }
+      rs = roots01(primitive(R));
+      rt = roots01(primitive(T));
+    }
+    const bool same_lists = plain && es.size() == 1;
+    std::vector<int> ps = pair_all(es, lt, rs, rt, same_lists);
+    std::vector<int> pt = pair_all(et, ls, rt, rs, same_lists);
+    std::vector<std::pair<int, int>> pairs;
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      if (ps[i] >= 0) pairs.push_back({int(i), ps[i]});
+    for (std::size_t j = 0; j < pt.size(); ++j)
+      if (pt[j] >= 0) pairs.push_back({pt[j], int(j)});
+    // Pairs whose both members are unresolved (several intersections on one line s = s_i and on one line t = t_j):
+    // exact evaluation when both are rational, otherwise the sheared system in u = s + lambda t.
+    std::vector<int> us, ut;
+    for (std::size_t i = 0; i < ps.size(); ++i)
+      if (ps[i] == unresolved) us.push_back(int(i));
+    for (std::size_t j = 0; j < pt.size(); ++j)
+      if (pt[j] == unresolved) ut.push_back(int(j));
+    bool all_rational = true;
+    for (int i : us) all_rational = all_rational && rs[i].root.is_rational();
+    for (int j : ut) all_rational = all_rational && rt[j].root.is_rational();
+    if (!us.empty() && !ut.empty()) {
+      if (all_rational) {
+        for (int i : us)
+          for (int j : ut)
+            if (point_at<D>(H1_, rs[i].root.rational_value()) == point_at<D>(H2_, rt[j].root.rational_value()))
+              pairs.push_back({i, j});
+      } else {
+        sheared_pairs(F, rs, rt, us, ut, pairs);
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& p : pairs) res.points.push_back(make_point(rs[p.first], rt[p.second], es[0], et[0], ps[p.first] >= 0));
+  }
+
+  // Shear s = u - lambda t: for generic lambda distinct solutions have distinct u; each root u_k of
+  // Res_t(G1(u - lambda t, t), G2(...)) in [0, 1 + lambda] gives t = -S10(u_k)/S11(u_k) and s = u_k - lambda t, located
+  // among the unresolved roots by exact sign decisions (polynomials in u evaluated at the algebraic u_k).
+  void sheared_pairs(const std::vector<P2>& F, const std::vector<Isolated_root>& rs, const std::vector<Isolated_root>& rt,
+                     const std::vector<int>& us, const std::vector<int>& ut, std::vector<std::pair<int, int>>& pairs) const {
+    const P2 U(P1(Integer(0), Integer(1)));
+    const P2 T(P1(0), P1(1));
+    for (int lambda = 1; lambda <= 12; ++lambda) {
+      const P2 S = U - T * P2(lambda);
+      std::vector<P2> Fs;
+      for (const P2& f : F) {
+        // f(S, t) = sum_j t^j f_j(S): Horner in the inner variable
+        P2 r(0);
+        for (int j = t_degree(f); j >= 0; --j) {
+          P2 fj(0);
+          for (int i = f[j].degree(); i >= 0; --i) fj = fj * S + P2(f[j][i]);
+          r += fj * CGAL::ipower(T, j);
+        }
+        Fs.push_back(r);
+      }
+      bool ok = false;
+      Elimination e;
+      for (const auto& pr : candidate_pairs(Fs)) {
+        e = eliminate(pr.first, pr.second);
+        if (e.ok) {
+          ok = true;
+          break;
+        }
+      }
+      if (!ok) continue;
+      std::vector<Isolated_root> ru = isolate_real_roots(e.R, Rational(0), Rational(1 + lambda));
+      std::vector<std::pair<int, int>> found;
+      bool good = true;
+      for (const Isolated_root& r : ru) {
+        const Algebraic_real& u = r.root;
+        const int s11 = root_sign(u, e.S11);
+        const P1& l1 = e.G1[t_degree(e.G1)];
+        const P1& l2 = e.G2[t_degree(e.G2)];
+        if (s11 == 0 || (root_sign(u, l1) == 0 && root_sign(u, l2) == 0)) {
+          good = false;
+          break;
+        }
+        const Polynomial_1<Rational> S10 = to_rational(e.S10), S11 = to_rational(e.S11);
+        const Polynomial_1<Rational> su = Polynomial_1<Rational>(Rational(0), Rational(1)) * S11 + S10 * Polynomial_1<Rational>(Rational(lambda));
+        // sign(t - c) = -sign(S10 + c S11) sign(S11); sign(s - c) = sign(u S11 + lambda S10 - c S11) sign(S11)
+        auto tcmp = [&](const Rational& c) { return -root_sign(u, S10 + S11 * Polynomial_1<Rational>(c)) * s11; };
+        auto scmp = [&](const Rational& c) { return root_sign(u, su - S11 * Polynomial_1<Rational>(c)) * s11; };
+        auto locate = [&](const std::vector<Isolated_root>& roots, const std::vector<int>& cand, auto cmp) {
+          for (int k : cand) {
+            const Algebraic_real& x = roots[k].root;
+            if (x.is_rational() ? cmp(x.rational_value()) == 0 : (cmp(x.lower()) > 0 && cmp(x.upper()) < 0)) return k;
+          }
+          return -1;
+        };
+        const int i = locate(rs, us, scmp), j = locate(rt, ut, tcmp);
+        if (i < 0 || j < 0) continue;
+        bool all = true;
+        if (F.size() > 2 || Fs.size() > 2) {
+          for (const P2& f : Fs) all = all && root_sign(u, substitute(f, -e.S10, e.S11)) == 0;
+        }
+        if (all) found.push_back({i, j});
+      }
+      if (!good) continue;
+      pairs.insert(pairs.end(), found.begin(), found.end());
+      return;
+    }
+    throw Error("intersect_curves: no separating shear found for a degenerate configuration");
+  }
+
+  Curve_intersection_point make_point(const Isolated_root& s, const Isolated_root& t, const Elimination& es,
+                                      const Elimination& et, bool s_direction) const {
+    Curve_intersection_point p;
+    p.s = s.root;
+    p.t = t.root;
+    const int m = std::min(s.multiplicity, t.multiplicity);
+    p.tangent = m >= 2 && parallel_tangents(s.root, t.root, s_direction ? es : et, s_direction);
+    p.multiplicity = p.tangent ? m : 1;
+    auto end = [](const Algebraic_real& x) { return x.is_rational() && (x == 0 || x == 1); };
+    p.kind = (end(p.s) || end(p.t)) ? Curve_intersection_kind::endpoint
+                                    : (p.tangent ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal);
+    return p;
+  }
+
+  // Tangent vectors D(u) = X_k' W - X_k W' are parallel iff all 2x2 minors of [D1(s); D2(t)] vanish; t is the
+  // rational function -S10/S11 of s (or symmetrically), so each minor is a univariate sign decision.
+  bool parallel_tangents(const Algebraic_real& s, const Algebraic_real& t, const Elimination& e, bool s_direction) const {
+    const Form& A = s_direction ? H1_ : H2_;
+    const Form& B = s_direction ? H2_ : H1_;
+    const Algebraic_real& a = s_direction ? s : t;
+    (void)t;
+    std::array<P1, D> da, db;
+    for (int k = 0; k < D; ++k) {
+      da[k] = CGAL::differentiate(A[k + 1]) * A[0] - A[k + 1] * CGAL::differentiate(A[0]);
+      db[k] = CGAL::differentiate(B[k + 1]) * B[0] - B[k + 1] * CGAL::differentiate(B[0]);
+    }
+    const P1 N = -e.S10;
+    for (int i = 0; i < D; ++i)
+      for (int j = i + 1; j < D; ++j) {
+        // da_i(a) db_j(b) - da_j(a) db_i(b), b = N/S11
+        P2 m = lift_outer(db[j]) * P2(da[i]) - lift_outer(db[i]) * P2(da[j]);
+        if (root_sign(a, substitute(m, N, e.S11)) != 0) return false;
+      }
+    return true;
+  }
+
+  // ---------------------------------------------------------------- overlaps (common component of the F_k)
+  void overlap_case(const std::vector<P2>& F, Curve_intersection_result& res) {
+    P2 H = F[0];
+    for (std::size_t k = 1; k < F.size(); ++k) H = CGAL::gcd(H, F[k]);
+    const P2 Hs = swap_variables(H);
+    if (t_degree(H) < 1 || t_degree(Hs) < 1)
+      throw Error("intersect_curves: a curve has a base point (common root of its homogeneous coordinates); "
+                  "reduce it first");
+    // Breakpoints on curve 1: its ends and the preimages of the ends of curve 2.
+    struct Break {
+      Algebraic_real s;
+      std::vector<Algebraic_real> t;  // partners on curve 2 (for ends of curve 1: by inversion)
+    };
+    std::vector<Break> br;
+    for (int e = 0; e <= 1; ++e) {
+      Break b{Algebraic_real(e), {}};
+      invert_point<D>(H2_, point_at<D>(H1_, Rational(e)), b.t);
+      br.push_back(b);
+      std::vector<Algebraic_real> ss;
+      invert_point<D>(H1_, point_at<D>(H2_, Rational(e)), ss);
+      for (const auto& s : ss) br.push_back(Break{s, {Algebraic_real(e)}});
+    }
+    std::sort(br.begin(), br.end(), [](const Break& x, const Break& y) { return x.s < y.s; });
+    std::vector<Break> ub;  // merge equal parameters
+    for (const Break& b : br) {
+      if (!ub.empty() && ub.back().s == b.s) {
+        for (const auto& t : b.t)
+          if (std::find(ub.back().t.begin(), ub.back().t.end(), t) == ub.back().t.end()) ub.back().t.push_back(t);
+      } else {
+        ub.push_back(b);
+      }
+    }
+    // Piece (b_i, b_{i+1}) is covered iff its rational midpoint lies on C2([0,1]) (the image of curve 1 lies on the
+    // irreducible implicit curve of curve 2, and coverage can only change at the preimages of C2(0), C2(1)).
+    std::vector<char> covered(ub.size() > 0 ? ub.size() - 1 : 0, 0);
+    std::vector<double> tmid(covered.size(), 0);
+    for (std::size_t i = 0; i + 1 < ub.size(); ++i) {
+      const Rational m = ub[i].s.is_rational() && ub[i + 1].s.is_rational()
+                             ? (ub[i].s.rational_value() + ub[i + 1].s.rational_value()) / 2
+                             : ub[i].s.rational_between(ub[i + 1].s);
+      std::vector<Algebraic_real> t;
+      invert_point<D>(H2_, point_at<D>(H1_, m), t);
+      covered[i] = !t.empty();
+      if (!t.empty()) tmid[i] = t.front().to_double();
+    }
+    auto pick = [](const std::vector<Algebraic_real>& c, double near) {
+      std::size_t best = 0;
+      for (std::size_t k = 1; k < c.size(); ++k)
+        if (std::abs(c[k].to_double() - near) < std::abs(c[best].to_double() - near)) best = k;
+      return c[best];
+    };
+    std::vector<Curve_overlap> ov;
+    for (std::size_t i = 0; i < covered.size();) {
+      if (!covered[i]) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j + 1 < covered.size() && covered[j + 1]) ++j;
+      if (ub[i].t.empty() || ub[j + 1].t.empty()) throw Error("intersect_curves: overlap end without partner");
+      ov.push_back({ub[i].s, ub[j + 1].s, pick(ub[i].t, tmid[i]), pick(ub[j + 1].t, tmid[j])});
+      i = j + 1;
+    }
+    auto inside = [&](const Algebraic_real& s, const Algebraic_real& t) {
+      for (const auto& o : ov) {
+        const bool ins = o.s0 <= s && s <= o.s1;
+        const bool int_ = (o.t0 <= t && t <= o.t1) || (o.t1 <= t && t <= o.t0);
+        if (ins && int_) return true;
+      }
+      return false;
+    };
+    // Isolated touching points at breakpoints.
+    for (const Break& b : ub)
+      for (const auto& t : b.t)
+        if (!inside(b.s, t)) {
+          Curve_intersection_point p;
+          p.s = b.s;
+          p.t = t;
+          p.kind = Curve_intersection_kind::endpoint;
+          res.points.push_back(p);
+        }
+    // Isolated intersections off the common component: the cofactors F_k / H.
+    std::vector<P2> A;
+    for (const P2& f : F) A.push_back(CGAL::integral_division(f, H));
+    bool constant = true;
+    for (const P2& a : A)
+      if (t_degree(a) > 0 || t_degree(swap_variables(a)) > 0) constant = false;
+    if (!constant) {
+      Curve_intersection_result sub;
+      bool has_zero = false;
+      for (const P2& a : A)
+        if (t_degree(a) == 0 && t_degree(swap_variables(a)) == 0) has_zero = true;  // nonzero constant: no zeros
+      if (!has_zero) solve_system(A, sub, false);
+      for (const auto& p : sub.points)
+        if (!inside(p.s, p.t)) {
+          bool dup = false;
+          for (const auto& q : res.points) dup = dup || (q.s == p.s && q.t == p.t);
+          if (!dup) res.points.push_back(p);
+        }
+    }
+    res.overlaps = ov;
+  }
+
+  static void sort_points(Curve_intersection_result& res) {
+    std::sort(res.points.begin(), res.points.end(), [](const Curve_intersection_point& a, const Curve_intersection_point& b) {
+      const int c = a.s.compare(b.s);
+      return c != 0 ? c < 0 : a.t < b.t;
+    });
+  }
+
+  const Curve& c1_;
+  const Curve& c2_;
+  Curve_intersection_method method_;
+  Form H1_, H2_;
+};
+
+} // namespace internal
+
+/// \brief All intersections of C1(s), s in [0,1], and C2(t), t in [0,1]: isolated points (s,t) as exact algebraic
+/// numbers and overlapping pieces. Both curves must have no pole in [0,1] (Invalid_input otherwise).
+///
+/// Method (du-1989 ch. 4): F_k(s,t) = X1_k(s) W2(t) - X2_k(t) W1(s); R(s), T(t) eliminants whose roots in [0,1]
+/// contain the parameters of all intersections; each root s_i of R is paired with t* = -S10(s_i)/S11(s_i) from the
+/// first subresultant S_1 of (F1,F2) w.r.t. t (valid when S11(s_i) != 0 and a leading coefficient does not vanish,
+/// both decided exactly), located among the roots of T by exact sign decisions; symmetrically in t. A vanishing
+/// resultant means a common component: overlaps are then found from the preimages of the curve ends.
+template <int D>
+Curve_intersection_result intersect_curves(const Rational_bezier_curve<Rational, D>& c1,
+                                           const Rational_bezier_curve<Rational, D>& c2,
+                                           Curve_intersection_method method = Curve_intersection_method::default_method) {
+  return internal::Curve_intersection_engine<D>(c1, c2, method).run();
+}
+
+/// \brief Self-intersections (loops) of a curve: pairs s < t in [0,1] with C(s) = C(t), exact (the system
+/// (X_k(s)W(t) - X_k(t)W(s)) / (s - t) = 0, divided differences, solved like intersect_curves).
+template <int D>
+Curve_intersection_result self_intersections(const Rational_bezier_curve<Rational, D>& c,
+                                             Curve_intersection_method method = Curve_intersection_method::default_method) {
+  return internal::Curve_intersection_engine<D>(c, c, method).run_self();
+}
+
+/// Functor form (CGAL style).
+struct Intersect_curves {
+  Curve_intersection_method method = Curve_intersection_method::default_method;
+  template <int D>
+  Curve_intersection_result operator()(const Rational_bezier_curve<Rational, D>& c1,
+                                       const Rational_bezier_curve<Rational, D>& c2) const {
+    return intersect_curves(c1, c2, method);
+  }
+};
+
+/// Parses "default", "projection", "resolvent"; "groebner" is not implemented (Invalid_input).
+inline Curve_intersection_method curve_intersection_method_from_string(const std::string& s) {
+  if (s == "default") return Curve_intersection_method::default_method;
+  if (s == "projection") return Curve_intersection_method::projection;
+  if (s == "resolvent") return Curve_intersection_method::resolvent;
+  if (s == "groebner") throw Invalid_input("the groebner curve intersection method is not implemented");
+  throw Invalid_input("unknown curve intersection method '" + s + "'");
+}
+
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_CURVE_INTERSECTION_H

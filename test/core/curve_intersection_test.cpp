@@ -1,0 +1,232 @@
+// Curve/curve intersection: generated problems with known exact intersections (du-1989 §4.2), tangencies of
+// multiplicity 2 and 3, endpoint hits, overlaps, identical and degenerate curves, space curves, loops.
+#include <catch2/catch.hpp>
+
+#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/Curve_problem_generator.h>
+
+#include <CGAL/Polynomial_traits_d.h>
+
+using namespace bezoutian;
+using Curve2 = Rational_bezier_curve_2<>;
+using Curve3 = Rational_bezier_curve_3<>;
+
+namespace {
+
+const Curve_intersection_method all_methods[] = {Curve_intersection_method::default_method,
+                                                  Curve_intersection_method::projection,
+                                                  Curve_intersection_method::resolvent};
+
+template <int D>
+void require_same(const Curve_intersection_result& a, const Curve_intersection_result& b) {
+  REQUIRE(a.points.size() == b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    CHECK(a.points[i].s == b.points[i].s);
+    CHECK(a.points[i].t == b.points[i].t);
+    CHECK(a.points[i].kind == b.points[i].kind);
+  }
+  REQUIRE(a.overlaps.size() == b.overlaps.size());
+}
+
+// Polynomial curve from its power form (x(t), y(t)) given by coefficient lists.
+Curve2 power_curve(std::vector<Rational> x, std::vector<Rational> y) {
+  Curve2::Power_form f;
+  f[0] = Polynomial_1<Rational>(Rational(1));
+  f[1] = Polynomial_1<Rational>(x.begin(), x.end());
+  f[2] = Polynomial_1<Rational>(y.begin(), y.end());
+  return Curve2::from_power_form(f);
+}
+
+// Independent check of an extra (not constructed) intersection: s is a root of CGAL's own resultant Res_t, t of
+// Res_s, and the points agree to 1e-12 after refinement.
+template <int D>
+void check_extra(const Rational_bezier_curve<Rational, D>& a, const Rational_bezier_curve<Rational, D>& b,
+                 const Curve_intersection_point& p) {
+  if (p.s.is_rational() && p.t.is_rational()) {
+    CHECK(a(p.s.rational_value()) == b(p.t.rational_value()));
+    return;
+  }
+  const auto H1 = internal::integer_power_form(a), H2 = internal::integer_power_form(b);
+  using P2 = Polynomial_2<Integer>;
+  P2 F1 = internal::cross_term(H1[1], H2[0], H2[1], H1[0]), F2 = internal::cross_term(H1[2], H2[0], H2[2], H1[0]);
+  const auto R = CGAL::resultant(F1, F2);  // w.r.t. t (outer), a polynomial in s
+  const auto T = CGAL::resultant(internal::swap_variables(F1), internal::swap_variables(F2));
+  if (!CGAL::is_zero(R)) CHECK(p.s.sign_of(R) == 0);
+  if (!CGAL::is_zero(T)) CHECK(p.t.sign_of(T) == 0);
+  p.s.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+  p.t.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+  const auto x = a.evaluate(CGAL::to_double(p.s.lower())), y = b.evaluate(CGAL::to_double(p.t.lower()));
+  for (int k = 0; k < D; ++k) CHECK(std::abs(x[k] - y[k]) < 1e-9 * (1 + std::abs(x[k])));
+}
+
+template <int D>
+int run_generated(int n1, int n2, int k, bool rational, unsigned long seed) {
+  Curve_problem_parameters par;
+  par.degree_1 = n1;
+  par.degree_2 = n2;
+  par.intersections = k;
+  par.rational = rational;
+  par.seed = seed;
+  par.range = 16;
+  const Curve_problem<D> pb = generate_curve_problem<D>(par);
+  INFO("D=" << D << " n1=" << n1 << " n2=" << n2 << " k=" << k << " rational=" << rational << " seed=" << seed);
+  // the construction itself: C2(t_j) == C1(s_j)
+  for (const auto& st : pb.known) REQUIRE(pb.curve_1(st.first) == pb.curve_2(st.second));
+  const Curve_intersection_result r = intersect_curves(pb.curve_1, pb.curve_2);
+  CHECK(r.overlaps.empty());
+  for (const auto& st : pb.known) {
+    bool found = false;
+    for (const auto& p : r.points) found = found || (p.s == st.first && p.t == st.second);
+    CHECK(found);
+  }
+  for (const auto& p : r.points) {
+    bool known = false;
+    for (const auto& st : pb.known) known = known || (p.s == st.first && p.t == st.second);
+    if (!known && D == 2) check_extra<D>(pb.curve_1, pb.curve_2, p);
+    if (!known && D == 3) {  // exact: s and t rational here or checked numerically
+      p.s.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+      p.t.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+      const auto x = pb.curve_1.evaluate(CGAL::to_double(p.s.lower())), y = pb.curve_2.evaluate(CGAL::to_double(p.t.lower()));
+      for (int c = 0; c < D; ++c) CHECK(std::abs(x[c] - y[c]) < 1e-9 * (1 + std::abs(x[c])));
+    }
+  }
+  for (auto m : all_methods) require_same<D>(r, intersect_curves(pb.curve_1, pb.curve_2, m));
+  return int(r.points.size());
+}
+
+} // namespace
+
+TEST_CASE("generated planar problems: every known intersection exactly, extras proved, strategies agree",
+          "[curve_intersection][generated]") {
+  int problems = 0;
+  unsigned long seed = 1;
+  for (int n1 = 2; n1 <= 4; ++n1)
+    for (int n2 = 2; n2 <= 4; ++n2)
+      for (int k = 0; k <= std::min(4, n2 + 1); ++k)
+        for (int rat = 0; rat <= 1; ++rat)
+          for (int rep = 0; rep < 2; ++rep, ++problems) run_generated<2>(n1, n2, k, rat == 1, seed++);
+  for (int n2 = 5; n2 <= 6; ++n2)
+    for (int k = 0; k <= 4; ++k) run_generated<2>(2, n2, k, true, seed++), ++problems;
+  CHECK(problems >= 170);
+}
+
+TEST_CASE("generated space problems (du-1989 §4.2 protocol, degrees 3-2..3-6)", "[curve_intersection][generated]") {
+  int problems = 0;
+  unsigned long seed = 1000;
+  for (int n2 = 2; n2 <= 6; ++n2)
+    for (int k = 0; k <= std::min(4, n2 + 1); ++k)
+      for (int rat = 0; rat <= 1; ++rat, ++problems)
+        if (n2 <= 4 || rat == 0) run_generated<3>(3, n2, k, rat == 1, seed++);
+  CHECK(problems >= 45);
+}
+
+TEST_CASE("tangencies of multiplicity 2 and 3", "[curve_intersection]") {
+  // parabola (2s-1, (2s-1)^2) and the x axis (2t-1, 0): tangent at the origin, s = t = 1/2
+  const Curve2 parabola = power_curve({-1, 2}, {1, -4, 4});
+  const Curve2 axis = power_curve({-1, 2}, {0});
+  auto r = intersect_curves(parabola, axis);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].s == Rational(1, 2));
+  CHECK(r.points[0].t == Rational(1, 2));
+  CHECK(r.points[0].tangent);
+  CHECK(r.points[0].kind == Curve_intersection_kind::tangent);
+  CHECK(r.points[0].multiplicity == 2);
+  // cubic (2s-1, (2s-1)^3): inflectional tangency with the axis, multiplicity 3
+  const Curve2 cubic = power_curve({-1, 2}, {-1, 6, -12, 8});
+  r = intersect_curves(cubic, axis);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].multiplicity == 3);
+  CHECK(r.points[0].kind == Curve_intersection_kind::tangent);
+  // parabola y = x^2 and its tangent y = 2x - 1 at x = 1 (x = 3s - 1: s = 2/3; x = 2t: t = 1/2)
+  const Curve2 p2 = power_curve({-1, 3}, {1, -6, 9});       // x = 3s - 1, y = x^2
+  const Curve2 line = power_curve({0, 2}, {-1, 4});          // x = 2t, y = 2x - 1
+  r = intersect_curves(p2, line);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].s == Rational(2, 3));
+  CHECK(r.points[0].t == Rational(1, 2));
+  CHECK(r.points[0].multiplicity == 2);
+  // transversal crossings at irrational parameters: y = x^2 and y = 1/2: x = +-1/sqrt 2
+  const Curve2 half = power_curve({-1, 2}, {Rational(1, 2)});
+  r = intersect_curves(parabola, half);
+  REQUIRE(r.points.size() == 2);
+  for (const auto& p : r.points) {
+    CHECK(!p.s.is_rational());
+    CHECK(p.s == p.t);  // same x parametrization
+    CHECK(p.kind == Curve_intersection_kind::transversal);
+    CHECK(p.s.sign_of(Polynomial_1<Integer>(Integer(1), Integer(-8), Integer(8))) == 0);  // (2s-1)^2 = 1/2
+  }
+  for (auto m : all_methods) require_same<2>(r, intersect_curves(parabola, half, m));
+}
+
+TEST_CASE("endpoints, overlaps, identical and degenerate curves", "[curve_intersection]") {
+  const Curve2 a(std::vector<Curve2::Point>{{0, 0}, {Rational(1, 2), 1}, {1, 0}});
+  // segments meeting at an end
+  const Curve2 s1(std::vector<Curve2::Point>{{0, 0}, {1, 1}}), s2(std::vector<Curve2::Point>{{1, 1}, {2, 0}});
+  auto r = intersect_curves(s1, s2);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].s == 1);
+  CHECK(r.points[0].t == 0);
+  CHECK(r.points[0].kind == Curve_intersection_kind::endpoint);
+  // identical curves: one overlap [0,1] x [0,1]; reversed: t runs backwards
+  r = intersect_curves(a, a);
+  REQUIRE(r.overlaps.size() == 1);
+  CHECK(r.points.empty());
+  CHECK((r.overlaps[0].s0 == 0 && r.overlaps[0].s1 == 1 && r.overlaps[0].t0 == 0 && r.overlaps[0].t1 == 1));
+  r = intersect_curves(a, a.reversed());
+  REQUIRE(r.overlaps.size() == 1);
+  CHECK((r.overlaps[0].s0 == 0 && r.overlaps[0].s1 == 1 && r.overlaps[0].t0 == 1 && r.overlaps[0].t1 == 0));
+  // partial overlap: a on [1/4, 2] reparametrized: a([1/4,1]) == b([0, 3/7])
+  r = intersect_curves(a, a.restriction(Rational(1, 4), Rational(2)));
+  REQUIRE(r.overlaps.size() == 1);
+  CHECK((r.overlaps[0].s0 == Rational(1, 4) && r.overlaps[0].s1 == 1 && r.overlaps[0].t0 == 0 &&
+         r.overlaps[0].t1 == Rational(3, 7)));
+  // touching pieces of one parabola: a([0,1/2]) and a([1/2,1]) share only the apex
+  r = intersect_curves(a.restriction(0, Rational(1, 2)), a.restriction(Rational(1, 2), 1));
+  CHECK(r.overlaps.empty());
+  REQUIRE(r.points.size() == 1);
+  CHECK((r.points[0].s == 1 && r.points[0].t == 0));
+  // degenerate (constant) curves
+  const Curve2 dot(std::vector<Curve2::Point>{{Rational(1, 2), Rational(1, 2)}, {Rational(1, 2), Rational(1, 2)}});
+  r = intersect_curves(dot, a);  // (1/2,1/2) = a(1/2)
+  REQUIRE(r.overlaps.size() == 1);
+  CHECK((r.overlaps[0].t0 == Rational(1, 2) && r.overlaps[0].t1 == Rational(1, 2)));
+  const Curve2 off(std::vector<Curve2::Point>{{0, 1}, {0, 1}, {0, 1}});
+  r = intersect_curves(a, off);
+  CHECK(r.overlaps.empty());
+  CHECK(r.points.empty());
+  r = intersect_curves(dot, dot);
+  CHECK(r.overlaps.size() == 1);
+  // a rational curve with a pole is rejected
+  const Curve2 pole = Curve2::from_homogeneous({{1, 0, 0}, {-3, 0, 0}, {1, 1, 1}});
+  CHECK_THROWS_AS(intersect_curves(pole, a), Invalid_input);
+  CHECK_THROWS_AS(curve_intersection_method_from_string("groebner"), Invalid_input);
+}
+
+TEST_CASE("space curves: overlap, endpoint, no intersection", "[curve_intersection]") {
+  const Curve3 c(std::vector<Curve3::Point>{{0, 0, 0}, {1, 2, 1}, {2, 0, 3}, {3, 1, 0}});
+  auto r = intersect_curves(c, c.restriction(Rational(1, 3), Rational(2, 3)));
+  REQUIRE(r.overlaps.size() == 1);
+  CHECK((r.overlaps[0].s0 == Rational(1, 3) && r.overlaps[0].s1 == Rational(2, 3)));
+  const Curve3 seg(std::vector<Curve3::Point>{{3, 1, 0}, {5, 5, 5}});
+  r = intersect_curves(c, seg);
+  REQUIRE(r.points.size() == 1);
+  CHECK((r.points[0].s == 1 && r.points[0].t == 0));
+  const Curve3 far(std::vector<Curve3::Point>{{10, 0, 0}, {11, 1, 1}});
+  CHECK(intersect_curves(c, far).points.empty());
+}
+
+TEST_CASE("self-intersections (loops) of a planar curve", "[curve_intersection][self]") {
+  // x(u) = u^2 - 1, y(u) = u^3 - u with u = 4s - 2: node at s = 1/4 (u = -1) and s = 3/4 (u = 1)
+  Polynomial_1<Rational> u(Rational(-2), Rational(4));
+  Curve2::Power_form f;
+  f[0] = Polynomial_1<Rational>(Rational(1));
+  f[1] = u * u - Polynomial_1<Rational>(Rational(1));
+  f[2] = u * u * u - u;
+  const Curve2 nodal = Curve2::from_power_form(f);
+  auto r = self_intersections(nodal);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].s == Rational(1, 4));
+  CHECK(r.points[0].t == Rational(3, 4));
+  // a parabola has no loop
+  CHECK(self_intersections(Curve2(std::vector<Curve2::Point>{{0, 0}, {1, 1}, {2, 0}})).points.empty());
+}
