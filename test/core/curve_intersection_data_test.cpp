@@ -95,7 +95,9 @@ TEST_CASE("dhermes/bezier curve intersections: 53 cases, exact parameters, minim
     CHECK(r.overlaps.empty());
     const std::size_t expected = id == 46 ? 4 : sp.size();  // README: case 46 has 4 exact intersections
     REQUIRE(r.points.size() == expected);
-    const double tol = id >= 51 ? 1e-9 : 1e-13;
+    // #46: the fixture describes the ideal (exactly tangent) configuration; the stored dyadic control points give two
+    // crossings 1.4e-9 apart near the listed tangency (README), and its minimal polynomials do not apply.
+    const double tol = id >= 51 ? 1e-9 : (id == 46 ? 1e-8 : 1e-13);
     for (std::size_t k = 0; k < sp.size(); ++k) {
       const Rational se = number(sp[k]), te = number(tp[k]);
       bool found = false;
@@ -105,7 +107,7 @@ TEST_CASE("dhermes/bezier curve intersections: 53 cases, exact parameters, minim
         // exact values (integers, p/q) must come out exactly
         if (!sp[k].is_string() || sp[k].get<std::string>().find("0x") == std::string::npos) CHECK(p.s == se);
         if (!tp[k].is_string() || tp[k].get<std::string>().find("0x") == std::string::npos) CHECK(p.t == te);
-        if (c.contains("curve1_polys")) {
+        if (c.contains("curve1_polys") && id != 46) {
           auto poly = [](const nlohmann::json& co) {
             std::vector<Integer> v;
             for (const auto& x : co) v.push_back(Integer(std::to_string(x.get<long long>())));
@@ -121,9 +123,13 @@ TEST_CASE("dhermes/bezier curve intersections: 53 cases, exact parameters, minim
             if (x.root == p.t && !p.t.is_rational()) CHECK(CGAL::is_zero(CGAL::mod(to_q(pt), to_q(p.t.polynomial()))));
           ++polys;
         }
-        if (c["type"] == "tangent" && id != 46) CHECK((p.tangent || p.kind == Curve_intersection_kind::endpoint));
       }
       CHECK(found);
+    }
+    if (c["type"] == "tangent" && id != 46) {  // at least one tangency (or a tangential endpoint hit)
+      bool tangent = false;
+      for (const auto& p : r.points) tangent = tangent || p.tangent || p.kind == Curve_intersection_kind::endpoint;
+      CHECK(tangent);
     }
     ++checked;
   }
