@@ -70,7 +70,8 @@ inline Polynomial_2<Integer> normalized_primitive_part(const Polynomial_2<Intege
 /// is that of c (univariate, CGAL) times that of P. P is usually square-free,
 /// which one specialization modulo a prime proves; otherwise a modular
 /// algorithm with exact certification is used
-/// (internal::square_free_part_of_primitive). CGAL's bivariate
+/// (internal::square_free_part_of_primitive; bounded number of primes, CGAL's
+/// generic algorithm as a last resort, never reached in practice). CGAL's bivariate
 /// Make_square_free gives the same answer but is orders of magnitude slower on
 /// implicit equations of bi-degree (24,24) and above.
 inline Polynomial_2<Integer> normalized_square_free_part(const Polynomial_2<Integer>& D) {

@@ -2,9 +2,14 @@
 // normalization of polynomials. Reference values come from outside the code
 // under test: CGAL's own (Berkowitz) determinant, CGAL's resultant (as the
 // determinant of the Sylvester matrix), closed forms (triangular, Vandermonde,
-// product of factors) and multiplicativity of det.
+// product of factors) and multiplicativity of det; for the square-free part,
+// exact identities checked with CGAL's own division and gcd.
+#include "test_support.h"
+
+#include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Polynomial_matrix_determinant.h>
 #include <bezoutian/Polynomial_normalization.h>
+#include <bezoutian/io/Geometry_document.h>
 
 #include <CGAL/Polynomial/determinant.h>
 
@@ -393,4 +398,58 @@ TEST_CASE("exact division in Z[u][v]", "[determinant][normalization]") {
   // Divisible over Q but not over Z is impossible for primitive divisors; 3a/(b) with b primitive:
   REQUIRE(exact_quotient(dense_entry(P2(3) * a * b), dense_entry(b), Q));
   CHECK(to_polynomial_2(Q) == P2(3) * a);
+}
+
+TEST_CASE("normalization: v-content when the first coefficients share only a constant", "[determinant][normalization]") {
+  // gcd(3, 3u) = 3 but the v^2 coefficient is 1: the content is 1, not 3. Stopping the gcd at the first
+  // constant made the primitive part of the modular candidate wrong (regression: teapot case below).
+  const P2 s = V * V + 3 * U * V + 3; // irreducible (discriminant 9u^2 - 12 is not a square)
+  CHECK(CGAL::abs(bezoutian::internal::v_content(s)[0]) == Integer(1));
+  CHECK(bezoutian::internal::v_content(P2(6) * U * V + P2(4) * U) == P1(Integer(0), Integer(2)));
+  CHECK(bezoutian::normalized_square_free_part(s * s) == s);
+  CHECK(bezoutian::normalized_square_free_part(V * V * V * s * s * (U * U - 3)) ==
+        bezoutian::normalized_primitive_part(V * s * (U * U - 3)));
+  const P2 t = P2(4) * V * V + 6 * V + 6 * U; // integer content 2 in v^0, v^1; primitive overall
+  CHECK(bezoutian::normalized_square_free_part(t * t * s) == bezoutian::normalized_primitive_part(t * s));
+  // The last resort of the modular algorithm (CGAL's Make_square_free) agrees.
+  CHECK(bezoutian::normalized_primitive_part(bezoutian::internal::generic_square_free_part(t * t * s)) ==
+        bezoutian::normalized_primitive_part(t * s));
+}
+
+TEST_CASE("normalization: square-free part of the teapot body/body intersection", "[determinant][normalization]") {
+  // Teapot body patches 4 and 5 (teapot32.bpt) share a boundary curve. D(u,t) was the regression:
+  // the modular square-free part did not terminate. Checks by exact identities computed with CGAL:
+  // S | D, every irreducible factor of D/S divides S (so D | S^k), S has no repeated factor.
+  const auto doc = bezoutian::io::read_geometry_file(bezoutian_test::source_file("examples/data/teapot_body_handle.json"));
+  REQUIRE(doc.patches.size() >= 2);
+  const auto e = bezoutian::intersection_equation(doc.patches[0], doc.patches[1]);
+  const P2& D = e.determinant;
+  const P2& S = e.square_free;
+  REQUIRE(!CGAL::is_zero(D));
+  CHECK(S == bezoutian::normalized_square_free_part(D));
+  CHECK(S.degree() == 25); // deg_t of the radical (FLINT's fmpz_mpoly_factor, computed offline)
+  // S | D exactly.
+  const P2 Q = CGAL::integral_division(D, S);
+  CHECK(Q * S == D);
+  // D | S^k: strip from D/S, one CGAL gcd with S at a time, the factors it shares with S.
+  P2 R = Q;
+  int k = 1;
+  while (R.degree() > 0 || R[0].degree() > 0) {
+    const P2 h = CGAL::gcd(R, S);
+    REQUIRE((h.degree() > 0 || h[0].degree() > 0)); // a factor of D/S not in S would stop here
+    R = CGAL::integral_division(R, h);
+    ++k;
+  }
+  CHECK(k == 12); // D has a factor of multiplicity 12 in u alone (and t^3, from the shared boundary)
+  // The shared boundary t = 0 of patch 5 lies on patch 4: t | D, hence t | S.
+  CHECK(CGAL::is_zero(S[0]));
+  // S square-free: its v-content c is square-free (CGAL's univariate gcd), and at u = x with
+  // lc_v(S)(x) != 0 a repeated factor g of positive v-degree would give g(x,v) | gcd(f, f'), f = S(x,v).
+  const P1 c = bezoutian::internal::v_content(S);
+  CHECK(CGAL::gcd(c, CGAL::differentiate(c)).degree() == 0);
+  std::vector<Integer> f_coefficients;
+  for (const P1& a : S) f_coefficients.push_back(a.evaluate(Integer(1)));
+  const P1 f(f_coefficients.begin(), f_coefficients.end());
+  REQUIRE(f.degree() == S.degree());
+  CHECK(CGAL::gcd(f, CGAL::differentiate(f)).degree() == 0);
 }
