@@ -62,11 +62,10 @@ inline void divide_by_linear_factor(Mpz_vector& h, const Rational& r) {
 // modular test proves most factors free of rational roots; otherwise each
 // root is checked, and found rational roots are divided out of the tested
 // polynomial so that the test can succeed for the remaining ones.
-inline void isolate_factor(const Polynomial_1<Integer>& g, int multiplicity, const Rational& a, const Rational& b,
-                           std::vector<Isolated_root>& out) {
-  const auto cp = std::make_shared<const Mpz_vector>(coefficients_of(g));
+inline void make_roots(const Polynomial_1<Integer>& g, const std::shared_ptr<const Mpz_vector>& cp,
+                       const std::vector<Rational_isolating_interval>& ivs, int multiplicity,
+                       std::vector<Isolated_root>& out) {
   const Mpz_vector& c = *cp;
-  const std::vector<Rational_isolating_interval> ivs = isolate_square_free(c, a, b);
   Mpz_vector h;  // g without the rational roots found so far
   bool tested = false, no_rational = false;
   int found = 0, next_test = 1;  // re-run the modular test after 1, 2, 4, ... found roots
@@ -98,6 +97,52 @@ inline void isolate_factor(const Polynomial_1<Integer>& g, int multiplicity, con
     }
     out.push_back({x, multiplicity});
   }
+}
+
+inline void isolate_factor(const Polynomial_1<Integer>& g, int multiplicity, const Rational& a, const Rational& b,
+                           std::vector<Isolated_root>& out) {
+  const auto cp = std::make_shared<const Mpz_vector>(coefficients_of(g));
+  make_roots(g, cp, isolate_square_free(*cp, a, b), multiplicity, out);
+}
+
+// Isolating intervals of all real roots of a square-free g of degree >= 2:
+// the roots in [-1,1] directly, the others as x = 1/y for the roots y of the
+// reversed polynomial y^n g(1/y) in [-1,0) and (0,1] (y = 0 is not a root:
+// the reversed constant term is lc(g)). Both are well conditioned, unlike one
+// Bernstein subdivision of the whole Fujiwara interval. An interval (0,h)
+// of y maps to (1/h, 2^L) with the strict root bound 2^L.
+inline std::vector<Rational_isolating_interval> isolate_square_free_on_line(const Mpz_vector& c) {
+  std::vector<Rational_isolating_interval> out = isolate_square_free(c, Rational(-1), Rational(1));
+  const Mpz_vector rc(c.rbegin(), c.rend());
+  Rational B(1);
+  bool have_bound = false;
+  auto bound = [&]() -> const Rational& {
+    if (!have_bound) {
+      mpz_mul_2exp(mpq_numref(B.mpq()), mpq_numref(B.mpq()), static_cast<mp_bitcnt_t>(root_bound_exponent(c)));
+      have_bound = true;
+    }
+    return B;
+  };
+  for (int side = 0; side < 2; ++side) {
+    const Rational a = side == 0 ? Rational(-1) : Rational(0), b = side == 0 ? Rational(0) : Rational(1);
+    for (const Rational_isolating_interval& iv : isolate_square_free(rc, a, b)) {
+      Rational_isolating_interval x;
+      if (iv.exact) {
+        if (CGAL::abs(iv.lo) == Rational(1)) continue;  // x = +-1, found above
+        x.lo = x.hi = Rational(1) / iv.lo;
+        x.exact = true;
+      } else {  // y in (l,h) with l,h of one sign <=> x in (1/h, 1/l)
+        x.lo = CGAL::is_zero(iv.hi) ? Rational(-bound()) : Rational(1) / iv.hi;
+        x.hi = CGAL::is_zero(iv.lo) ? bound() : Rational(1) / iv.lo;
+        x.sign_lo = sign_at(c, x.lo);
+      }
+      out.push_back(std::move(x));
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const Rational_isolating_interval& u, const Rational_isolating_interval& v) {
+    return u.lo < v.lo;  // the intervals are disjoint
+  });
+  return out;
 }
 
 // All roots of the factors in [a,b] (a <= b), sorted.
@@ -133,10 +178,8 @@ inline std::vector<Isolated_root> isolate_all(const std::vector<std::pair<Polyno
       out.push_back({Algebraic_real(Rational(-g[0], g[1])), fm.second});
       continue;
     }
-    // All roots lie strictly inside (-2^L, 2^L).
-    Rational B(1);
-    mpz_mul_2exp(mpq_numref(B.mpq()), mpq_numref(B.mpq()), static_cast<mp_bitcnt_t>(root_bound_exponent(coefficients_of(g))));
-    isolate_factor(g, fm.second, -B, B, out);
+    const auto cp = std::make_shared<const Mpz_vector>(coefficients_of(g));
+    make_roots(g, cp, isolate_square_free_on_line(*cp), fm.second, out);
   }
   if (factors.size() > 1)
     std::stable_sort(out.begin(), out.end(),
@@ -197,12 +240,8 @@ inline std::size_t count_real_roots(const Polynomial_1<Rational>& f, const Ratio
 inline std::size_t count_real_roots(const Polynomial_1<Integer>& f) {
   if (CGAL::is_zero(f)) throw Zero_polynomial_error();
   std::size_t n = 0;
-  for (const auto& fm : internal::square_free_factors(f)) {
-    const internal::Mpz_vector c = internal::coefficients_of(fm.first);
-    Rational B(1);
-    mpz_mul_2exp(mpq_numref(B.mpq()), mpq_numref(B.mpq()), static_cast<mp_bitcnt_t>(internal::root_bound_exponent(c)));
-    n += internal::isolate_square_free(c, -B, B).size();
-  }
+  for (const auto& fm : internal::square_free_factors(f))
+    n += fm.first.degree() == 1 ? 1 : internal::isolate_square_free_on_line(internal::coefficients_of(fm.first)).size();
   return n;
 }
 
