@@ -19,6 +19,21 @@
 #include <string>
 #include <vector>
 
+#ifdef CI_DEBUG
+#include <chrono>
+#include <iostream>
+#define CI_TICK_START auto ci_t0 = std::chrono::steady_clock::now()
+#define CI_TICK(name)                                                                                          \
+  do {                                                                                                         \
+    auto ci_t1 = std::chrono::steady_clock::now();                                                             \
+    std::cerr << name << " " << std::chrono::duration<double, std::milli>(ci_t1 - ci_t0).count() << " ms\n"; \
+    ci_t0 = ci_t1;                                                                                             \
+  } while (0)
+#else
+#define CI_TICK_START
+#define CI_TICK(name)
+#endif
+
 namespace bezoutian {
 
 /// How the eliminant polynomials R(s), T(t) are computed. Every strategy is followed by the same certified
@@ -336,6 +351,29 @@ class Curve_intersection_engine {
     return out;
   }
 
+  static void clean(Elimination& e, const P1& W) {
+    if (W.degree() < 1) return;
+    e.R = divide_out(e.R, W);
+    for (;;) {  // divide S10 and S11 by W while both are divisible
+      Ci_poly1 q0, r0, q1, r1;
+      Integer d0, d1;
+      if (CGAL::is_zero(e.S10) || CGAL::is_zero(e.S11)) return;
+      Ci_poly1::pseudo_division(e.S10, W, q0, r0, d0);
+      Ci_poly1::pseudo_division(e.S11, W, q1, r1, d1);
+      if (!CGAL::is_zero(r0) || !CGAL::is_zero(r1)) return;
+      // S10 = q0 W / d0, S11 = q1 W / d1: keep the ratio with integer coefficients
+      e.S10 = q0 * P1(d1);
+      e.S11 = q1 * P1(d0);
+      Integer c(0);
+      for (const P1* q : {&e.S10, &e.S11})
+        for (int i = 0; i <= q->degree(); ++i) c = CGAL::gcd(c, (*q)[i]);
+      if (c > 1) {
+        e.S10 = CGAL::integral_division(e.S10, P1(c));
+        e.S11 = CGAL::integral_division(e.S11, P1(c));
+      }
+    }
+  }
+
   static std::vector<Isolated_root> roots01(const P1& f) {
     std::vector<Isolated_root> r = isolate_real_roots(f, Rational(0), Rational(1));
     separate_roots(r);
@@ -349,6 +387,7 @@ class Curve_intersection_engine {
   }
 
   void solve_system(const std::vector<P2>& F, Curve_intersection_result& res, bool allow_overlap) {
+    CI_TICK_START;
     std::vector<Elimination> es, et;
     bool ok = false;
     for (const auto& G : candidate_systems(F)) {
@@ -365,6 +404,7 @@ class Curve_intersection_engine {
       }
       if (ok) break;
     }
+    CI_TICK("eliminate");
     if (!ok) {
       if (!allow_overlap) throw Error("intersect_curves: the reduced system still has a common component");
       overlap_case(F, res);
@@ -372,6 +412,10 @@ class Curve_intersection_engine {
     }
     // Location lists: roots in [0,1] of every resultant; main lists: the strategy's eliminant (2D default: the same
     // polynomial as the first location list; space: the gcd of the resultants).
+    // The weights have no root in [0,1]: remove the factors W1(s)^n2 (resp. W2(t)^n1) of the resultants (roots at
+    // infinity) and common weight factors of S10, S11 (their ratio is unchanged where W != 0).
+    for (auto& e : es) clean(e, H1_[0]);
+    for (auto& e : et) clean(e, H2_[0]);
     std::vector<std::vector<Isolated_root>> ls, lt;
     for (const auto& e : es) ls.push_back(roots01(primitive(e.R)));
     for (const auto& e : et) lt.push_back(roots01(primitive(e.R)));
@@ -389,9 +433,11 @@ class Curve_intersection_engine {
       rs = roots01(primitive(R));
       rt = roots01(primitive(T));
     }
+    CI_TICK("isolate");
     const bool same_lists = plain && es.size() == 1;
     std::vector<int> ps = pair_all(es, lt, rs, rt, same_lists);
     std::vector<int> pt = pair_all(et, ls, rt, rs, same_lists);
+    CI_TICK("pair");
     std::vector<std::pair<int, int>> pairs;
     for (std::size_t i = 0; i < ps.size(); ++i)
       if (ps[i] >= 0) pairs.push_back({int(i), ps[i]});
@@ -420,6 +466,7 @@ class Curve_intersection_engine {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (const auto& p : pairs) res.points.push_back(make_point(rs[p.first], rt[p.second], es[0], et[0], ps[p.first] >= 0));
+    CI_TICK("points");
   }
 
   // Shear s = u - lambda t: for generic lambda distinct solutions have distinct u; each root u_k of

@@ -115,9 +115,9 @@ TEST_CASE("generated space problems (du-1989 §4.2 protocol, degrees 3-2..3-6)",
   unsigned long seed = 1000;
   for (int n2 = 2; n2 <= 6; ++n2)
     for (int k = 0; k <= std::min(4, n2 + 1); ++k)
-      for (int rat = 0; rat <= 1; ++rat, ++problems)
-        if (n2 <= 4 || rat == 0) run_generated<3>(3, n2, k, rat == 1, seed++);
-  CHECK(problems >= 45);
+      for (int rat = 0; rat <= 1; ++rat)
+        for (int rep = 0; rep < 2; ++rep, ++problems) run_generated<3>(3, n2, k, rat == 1, seed++);
+  CHECK(problems >= 90);
 }
 
 TEST_CASE("tangencies of multiplicity 2 and 3", "[curve_intersection]") {

@@ -111,18 +111,28 @@ inline int root_sign(const Algebraic_real& a, const Ci_poly1& F) {
   if (F.degree() == 0) return CGAL::sign(F[0]);
   int bits = 0;
   for (int i = 0; i <= F.degree(); ++i) bits = std::max(bits, int(F[i].bit_size()));
-  mpfr_prec_t prec = 64 + 2 * F.degree();
-  for (int round = 0; round < 5; ++round) {
+  // Horner on an interval of width w errs by about 2^bits * deg * w: refine geometrically in the exponent and
+  // carry enough precision to represent the interval ends.
+  long wexp = 0;  // the interval width is about 2^-wexp
+  for (int round = 0; round < 8; ++round) {
     if (a.is_rational()) return root_sign(a, F);
+    const Rational w = a.upper() - a.lower();
+    wexp = long(mpz_sizeinbase(w.denominator().mpz(), 2)) - long(mpz_sizeinbase(w.numerator().mpz(), 2));
+    const mpfr_prec_t prec = mpfr_prec_t(std::max(64L, long(bits) + std::max(0L, wexp) + 2 * F.degree() + 64));
     const int s = interval_sign_mpfi(F, a.lower(), a.upper(), prec);
     if (s != 0) return s;
-    const Rational w = a.upper() - a.lower();
-    Rational shrink(1);
-    for (int k = 0; k < 16 << round; ++k) shrink /= 2;
-    a.refine_to_width(w * shrink);
-    prec = prec * 2 + (round == 0 ? bits / 4 : 0);
+    Integer p2(1);
+    mpz_mul_2exp(p2.mpz(), p2.mpz(), (unsigned long)(round == 0 ? 64 : (32UL << round)));
+    a.refine_to_width(w / Rational(p2));
   }
-  return a.sign_of(F);
+#ifdef CI_DEBUG
+  std::cerr << "fallback deg " << F.degree() << " bits " << bits << " wexp " << wexp << " rootdeg " << a.polynomial().degree() << "\n";
+#endif
+  const int ex = a.sign_of(F);
+#ifdef CI_DEBUG
+  std::cerr << "  exact " << ex << "\n";
+#endif
+  return ex;
 }
 
 inline int root_sign(const Algebraic_real& a, const Polynomial_1<Rational>& f) {
@@ -131,6 +141,22 @@ inline int root_sign(const Algebraic_real& a, const Polynomial_1<Rational>& f) {
   for (int i = 0; i <= f.degree(); ++i) l = CGAL::div(l * f[i].denominator(), CGAL::gcd(l, f[i].denominator()));
   for (int i = 0; i <= f.degree(); ++i) c.push_back((f[i] * Rational(l)).numerator());
   return root_sign(a, Ci_poly1(c.begin(), c.end()));
+}
+
+/// Removes every factor w (a polynomial without roots in [0,1], e.g. a weight) from f: f / w^k, exactly.
+/// Res_t(F1,F2) contains W1(s)^deg W2 (common roots at infinity: W1(s) = 0 makes all F_k multiples of W2(t)).
+inline Ci_poly1 divide_out(Ci_poly1 f, const Ci_poly1& w) {
+  if (CGAL::is_zero(f) || w.degree() < 1) return f;
+  for (;;) {
+    Ci_poly1 q, r;
+    Integer d;
+    Ci_poly1::pseudo_division(f, w, q, r, d);
+    if (!CGAL::is_zero(r) || q.degree() < 0) return f;
+    q = CGAL::canonicalize(q);
+    if (CGAL::is_zero(q)) return f;
+    f = q;
+    if (f.degree() < w.degree()) return f;
+  }
 }
 
 /// Make the isolating intervals of sorted distinct roots pairwise disjoint (rationals outside the neighbours'
