@@ -238,7 +238,7 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
     L.note = "the certified topology of D = 0 (total degree " + std::to_string(total) +
              ") was not attempted: above max_total_degree_for_topology = " +
              std::to_string(o.max_total_degree_for_topology) +
-             " CGAL's whole-plane curve analysis takes too long; the implicit equation D is exact";
+             ": CGAL's whole-plane curve analysis takes too long; the implicit equation D is exact";
     return false;
   }
   L.topology = analyse_curve_in_box(D, o.box, o.tolerance, o.samples_per_arc);
