@@ -160,13 +160,21 @@ class Curve_intersection_engine {
     P2 G1, G2;       // the pair whose subresultants give the inversion
     P1 R, S10, S11;  // Res_t(G1,G2) and the first subresultant S_1 = S11 t + S10 (w.r.t. t)
     bool ok = false;
+    bool has_S1 = true;
   };
 
-  static Elimination eliminate(const P2& G1, const P2& G2) {
+  // with_S1 = false: only the resultant (CGAL::resultant, cheaper than the subresultant sequence)
+  static Elimination eliminate(const P2& G1, const P2& G2, bool with_S1 = true) {
     Elimination e;
     e.G1 = G1;
     e.G2 = G2;
     if (t_degree(G1) < 1 || t_degree(G2) < 1) return e;
+    if (!with_S1) {
+      e.R = CGAL::resultant(G1, G2);
+      e.ok = !CGAL::is_zero(e.R);
+      e.has_S1 = false;
+      return e;
+    }
     std::vector<P2> sres;
     typename CGAL::Polynomial_traits_d<P2>::Polynomial_subresultants()(G1, G2, std::back_inserter(sres));
     if (sres.empty() || CGAL::is_zero(sres[0])) return e;
@@ -398,7 +406,7 @@ class Curve_intersection_engine {
         es.push_back(eliminate(G[0], G[m]));
         ok = es.back().ok && t_degree(swap_variables(G[0])) >= 1 && t_degree(swap_variables(G[m])) >= 1;
         if (ok) {
-          et.push_back(eliminate(swap_variables(G[0]), swap_variables(G[m])));
+          et.push_back(eliminate(swap_variables(G[0]), swap_variables(G[m]), false));
           ok = et.back().ok;
         }
       }
@@ -436,7 +444,15 @@ class Curve_intersection_engine {
     CI_TICK("isolate");
     const bool same_lists = plain && es.size() == 1;
     std::vector<int> ps = pair_all(es, lt, rs, rt, same_lists);
-    std::vector<int> pt = pair_all(et, ls, rt, rs, same_lists);
+    // The t direction is needed only for s-roots left unresolved (otherwise every pair was found from s).
+    std::vector<int> pt(rt.size(), none);
+    if (std::find(ps.begin(), ps.end(), int(unresolved)) != ps.end()) {
+      for (std::size_t m = 0; m < et.size(); ++m) {
+        et[m] = eliminate(et[m].G1, et[m].G2, true);
+        clean(et[m], H2_[0]);
+      }
+      pt = pair_all(et, ls, rt, rs, same_lists);
+    }
     CI_TICK("pair");
     std::vector<std::pair<int, int>> pairs;
     for (std::size_t i = 0; i < ps.size(); ++i)
