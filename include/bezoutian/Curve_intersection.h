@@ -98,6 +98,7 @@ class Curve_intersection_engine {
       constant_case(k1, k2, res);
       return res;
     }
+    if (disjoint_hulls()) return res;
     std::vector<P2> F;
     for (int k = 1; k <= D; ++k) F.push_back(cross_term(H1_[k], H2_[0], H2_[k], H1_[0]));
     solve_system(F, res, /*allow_overlap=*/true);
@@ -131,6 +132,28 @@ class Curve_intersection_engine {
   }
 
  private:
+  // Exact exclusion filter: with all weights positive a curve lies in the bounding box of its control points
+  // (convex hull property); disjoint boxes prove that there is no intersection.
+  bool disjoint_hulls() const {
+    auto box = [](const Curve& c, std::array<Rational, D>& lo, std::array<Rational, D>& hi) {
+      for (std::size_t i = 0; i < c.number_of_control_points(); ++i)
+        if (CGAL::sign(c.weight(i)) <= 0) return false;
+      for (std::size_t i = 0; i < c.number_of_control_points(); ++i) {
+        const auto p = c.control_point(i);
+        for (int k = 0; k < D; ++k) {
+          if (i == 0 || p[k] < lo[k]) lo[k] = p[k];
+          if (i == 0 || p[k] > hi[k]) hi[k] = p[k];
+        }
+      }
+      return true;
+    };
+    std::array<Rational, D> l1, h1, l2, h2;
+    if (!box(c1_, l1, h1) || !box(c2_, l2, h2)) return false;
+    for (int k = 0; k < D; ++k)
+      if (h1[k] < l2[k] || h2[k] < l1[k]) return true;
+    return false;
+  }
+
   // ---------------------------------------------------------------- degenerate (constant) curves
   static bool is_constant(const Form& H) {
     const Integer w0 = H[0][0];  // W(0) != 0 (no pole on [0,1])
