@@ -227,6 +227,22 @@ TEST_CASE("self-intersections (loops) of a planar curve", "[curve_intersection][
   REQUIRE(r.points.size() == 1);
   CHECK(r.points[0].s == Rational(1, 4));
   CHECK(r.points[0].t == Rational(3, 4));
-  // a parabola has no loop
+  // a parabola has no loop; the planar nodal cubic lifted to z = s (a twisted cubic) has none either
   CHECK(self_intersections(Curve2(std::vector<Curve2::Point>{{0, 0}, {1, 1}, {2, 0}})).points.empty());
+  Curve3::Power_form g;
+  g[0] = f[0];
+  g[1] = f[1];
+  g[2] = f[2];
+  g[3] = Polynomial_1<Rational>(Rational(0), Rational(1));
+  CHECK(self_intersections(Curve3::from_power_form(g)).points.empty());
+}
+
+TEST_CASE("functor form", "[curve_intersection]") {
+  const Curve2 a(std::vector<Curve2::Point>{{0, 0}, {1, 1}}), b(std::vector<Curve2::Point>{{0, 1}, {1, 0}});
+  Intersect_curves f;
+  f.method = Curve_intersection_method::projection;
+  const auto r = f(a, b);
+  REQUIRE(r.points.size() == 1);
+  CHECK((r.points[0].s == Rational(1, 2) && r.points[0].t == Rational(1, 2)));
+  CHECK(std::string(to_string(r.points[0].kind)) == "transversal");
 }
