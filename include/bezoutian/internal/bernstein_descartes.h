@@ -319,6 +319,7 @@ class Bernstein_descartes_isolator {
     // Root node: exact Bernstein coefficients.
     auto root = std::make_shared<Exact_node>();
     root->d = 0;
+    root->mono = G_;
     (*converter_)(G_, root->b);
     ++stats_.exact_nodes;
     Node r;
@@ -326,6 +327,7 @@ class Bernstein_descartes_isolator {
     r.s_lo = s0;
     r.s_hi = s1;
     r.exact = root;
+    r.mono = root;
     stack_.clear();
     stack_.push_back(std::move(r));
     while (!stack_.empty()) {
@@ -346,8 +348,10 @@ class Bernstein_descartes_isolator {
 
  private:
   struct Exact_node {
+    Mpz k;
     unsigned long d = 0;
-    Mpz_vector b;
+    Mpz_vector b;                          // Bernstein coefficients on [k/2^d, (k+1)/2^d]
+    Mpz_vector mono;                       // local monomial form (may be empty)
     std::shared_ptr<Exact_node> child[2];  // exact halves, computed on demand
   };
   struct Node {
@@ -358,6 +362,7 @@ class Bernstein_descartes_isolator {
     bool has_float = false;
     Float_bernstein f;
     std::shared_ptr<Exact_node> exact;  // exact coefficients of this node or of an ancestor
+    std::shared_ptr<Exact_node> mono;   // nearest ancestor (or self) with its monomial form
   };
 
   void push_point(std::vector<Dyadic_root>& out, mpz_srcptr k, unsigned long d) {
@@ -391,8 +396,12 @@ class Bernstein_descartes_isolator {
     return v;
   }
 
-  // Exact Bernstein coefficients of the node, from the nearest exact ancestor
-  // (by exact de Casteljau along the path) or directly from G.
+  // Exact Bernstein coefficients of the node: by exact de Casteljau from a
+  // close exact ancestor, otherwise from the local monomial form of the
+  // nearest ancestor A that has one: with r = k - 2^gap k_A,
+  // P(t) = 2^(gap n) P_A((r + t)/2^gap) = sum_i a_i (r + t)^i 2^(gap(n-i)),
+  // a Horner scheme in (r + t) whose multiplier r has only gap bits (from the
+  // root, k would have d bits).
   std::shared_ptr<Exact_node> exact_of(const Node& node) {
     std::shared_ptr<Exact_node> cur = node.exact;
     if (cur && cur->d == node.d) return cur;
@@ -403,6 +412,8 @@ class Bernstein_descartes_isolator {
         if (!cur->child[0]) {
           auto l = std::make_shared<Exact_node>(), r = std::make_shared<Exact_node>();
           l->d = r->d = cur->d + 1;
+          mpz_mul_2exp(l->k.get(), cur->k.get(), 1);
+          mpz_add_ui(r->k.get(), l->k.get(), 1);
           de_casteljau_exact(cur->b, l->b, r->b, exact_work_);
           stats_.exact_nodes += 2;
           cur->child[0] = l;
@@ -412,24 +423,31 @@ class Bernstein_descartes_isolator {
       }
       return cur;
     }
-    // P(t) = 2^(d n) G((k+t)/2^d) = sum_i c_i (k+t)^i 2^(d(n-i)) by Horner in (k+t).
+    const Exact_node& A = *node.mono;
+    const unsigned long gap = node.d - A.d;
+    Mpz r;
+    mpz_mul_2exp(r.get(), A.k.get(), gap);
+    mpz_sub(r.get(), node.k.get(), r.get());
     auto e = std::make_shared<Exact_node>();
     e->d = node.d;
-    Mpz_vector H(n_ + 1);
+    mpz_set(e->k.get(), node.k.get());
+    Mpz_vector& H = e->mono;
+    H.resize(n_ + 1);
     Mpz t;
-    mpz_set(H[0].get(), G_[n_].get());
+    mpz_set(H[0].get(), A.mono[n_].get());
     for (int i = n_ - 1; i >= 0; --i) {
       const int deg = n_ - 1 - i;  // current degree of H
-      // H <- H * (k + t)
+      // H <- H * (r + t)
       mpz_set(H[deg + 1].get(), H[deg].get());
       for (int j = deg; j >= 1; --j) {
-        mpz_mul(H[j].get(), H[j].get(), node.k.get());
+        mpz_mul(H[j].get(), H[j].get(), r.get());
         mpz_add(H[j].get(), H[j].get(), H[j - 1].get());
       }
-      mpz_mul(H[0].get(), H[0].get(), node.k.get());
-      mpz_mul_2exp(t.get(), G_[i].get(), node.d * static_cast<unsigned long>(n_ - i));
+      mpz_mul(H[0].get(), H[0].get(), r.get());
+      mpz_mul_2exp(t.get(), A.mono[i].get(), gap * static_cast<unsigned long>(n_ - i));
       mpz_add(H[0].get(), H[0].get(), t.get());
     }
+    remove_common_power_of_two(H);
     (*converter_)(H, e->b);
     ++stats_.exact_nodes;
     return e;
@@ -444,6 +462,7 @@ class Bernstein_descartes_isolator {
     bool have_exact = false;
     if (var < 0) {
       node.exact = exact_of(node);
+      if (!node.exact->mono.empty()) node.mono = node.exact;
       have_exact = true;
       var = sign_variations(node.exact->b);
     }
@@ -464,6 +483,7 @@ class Bernstein_descartes_isolator {
     mpz_mul_2exp(left.k.get(), node.k.get(), 1);
     mpz_add_ui(right.k.get(), left.k.get(), 1);
     left.exact = right.exact = node.exact;
+    left.mono = right.mono = node.mono;
     Float_bernstein src;
     const Float_bernstein* fsrc = nullptr;
     if (have_exact) {
