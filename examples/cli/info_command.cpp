@@ -49,7 +49,7 @@ void run_info(const std::string& path, bool json) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  std::cout << path << ": " << count << " " << (count == 1 ? kind.substr(0, kind.size() - 1) : kind);
+  std::cout << path << ": " << count << " " << (count == 1 ? (kind == "patches" ? std::string("patch") : std::string("curve")) : kind);
   if (kind == "curves") std::cout << (dims == 2 ? " in the plane" : dims == 3 ? " in space" : " (planar and spatial)");
   std::cout << ", " << (rational ? "rational" : "polynomial") << "\n";
   std::cout << "degrees:";
