@@ -14,6 +14,7 @@
 // (b) and (c) run in a forked child killed after the time limit; "-" means not attempted or not finished.
 // Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -Iinclude benchmark/implicit_equation_benchmark.cpp -o implicit_equation_benchmark -lmpfi -lmpfr -lgmp
 // Run:   ./implicit_equation_benchmark [time_limit_s=60] [berkowitz_max_size=9] [cascade_max_size=9]
+#include "random_patches.h"
 #include <bezoutian/Implicit_equation.h>
 
 #include <CGAL/Polynomial.h>
@@ -41,17 +42,6 @@ using P2 = Polynomial_2<Z>;
 using P3 = CGAL::Polynomial<P2>;
 using P4 = CGAL::Polynomial<P3>;
 
-static Patch random_patch(std::mt19937& g, int m, int n, bool rational) {
-  std::uniform_int_distribution<int> c(-5, 5), w(1, 4);
-  std::vector<std::vector<Patch::Point>> p(m + 1, std::vector<Patch::Point>(n + 1));
-  std::vector<std::vector<Q>> wt(m + 1, std::vector<Q>(n + 1, Q(1)));
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j) {
-      p[i][j] = {Q(c(g)), Q(c(g)), Q(c(g))};
-      if (rational) wt[i][j] = Q(w(g));
-    }
-  return Patch(p, wt);
-}
 
 static double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

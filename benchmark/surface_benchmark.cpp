@@ -3,6 +3,7 @@
 // certified topology of D = 0 in [0,1]^2 (CGAL arrangement of D and the box lines) with lifting.
 // Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -Iinclude benchmark/surface_benchmark.cpp -lmpfi -lmpfr -lgmp
 // Run:   ./a.out [max_total_degree_for_topology=40] [patches_per_case=3]
+#include "random_patches.h"
 #include <bezoutian/Surface_intersection.h>
 
 #include <chrono>
@@ -14,17 +15,6 @@ using namespace bezoutian;
 using Q = Rational;
 using Patch = Rational_bezier_patch<>;
 
-static Patch random_patch(std::mt19937& g, int m, int n, bool rational) {
-  std::uniform_int_distribution<int> c(-5, 5), w(1, 4);
-  std::vector<std::vector<Patch::Point>> p(m + 1, std::vector<Patch::Point>(n + 1));
-  std::vector<std::vector<Q>> wt(m + 1, std::vector<Q>(n + 1, Q(1)));
-  for (int i = 0; i <= m; ++i)
-    for (int j = 0; j <= n; ++j) {
-      p[i][j] = {Q(c(g)), Q(c(g)), Q(c(g))};
-      if (rational) wt[i][j] = Q(w(g));
-    }
-  return Patch(p, wt);
-}
 
 int main(int argc, char** argv) {
   const int max_degree = argc > 1 ? std::atoi(argv[1]) : 40;

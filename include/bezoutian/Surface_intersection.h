@@ -48,7 +48,8 @@ struct Locus_point {
   std::array<double, 3> point_3d{};
   double residual = std::numeric_limits<double>::quiet_NaN();  ///< |Phi(first) - Phi/Psi(second)|
   bool lifted = false;   ///< the kernel gave a partner
-  bool genuine = false;  ///< partner inside its domain and distinct from the point itself
+  /// partner inside its domain, distinct from the point itself, and verified: residual <= 1e-7 (1 + |point_3d|)
+  bool genuine = false;
 };
 
 /// One arc of D = 0 inside the box, traced.
@@ -246,6 +247,14 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   return true;
 }
 
+// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
+// after polishing): a failed polish must not be reported as a double point.
+inline bool verified(const Locus_point& q) {
+  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
+                                     q.point_3d[2] * q.point_3d[2]);
+  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
+}
+
 } // namespace internal
 
 /// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
@@ -295,7 +304,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
     q.point_3d = patch.evaluate(q.second[0], q.second[1]);
     q.residual = internal::distance3(patch.evaluate(q.first[0], q.first[1]), q.point_3d);
     const bool distinct = std::fabs(lk[0]) + std::fabs(lk[1]) > 1e-9;
-    q.genuine = distinct && (o.partner_domain_unbounded ||
+    q.genuine = distinct && internal::verified(q) && (o.partner_domain_unbounded ||
                              (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
   });
@@ -349,8 +358,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     q.second = {vs[1], t};
     q.point_3d = phi.evaluate(q.first[0], q.first[1]);
     q.residual = internal::distance3(q.point_3d, psi.evaluate(q.second[0], q.second[1]));
-    q.genuine = o.partner_domain_unbounded ||
-                (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second));
+    q.genuine = internal::verified(q) && (o.partner_domain_unbounded ||
+                (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
   });
   return L;

@@ -42,6 +42,7 @@ TEST_CASE("worked example: triple point with three branches and three partners",
       REQUIRE(q.lifted);
       CHECK(q.residual < 1e-6);
       CHECK(std::fabs(q.partner[0]) + std::fabs(q.partner[1]) > 1e-3);
+      CHECK(q.genuine);  // verified residual, partner unrestricted (--domain none)
     }
   // at the triple point the six half-branches carry three distinct partners (three sheets cross pairwise)
   std::vector<std::array<double, 2>> partners;
