@@ -1,0 +1,601 @@
+// CGAL Arrangement_2 traits for planar rational Bezier curves with exact rational control points and positive
+// weights: a model of ArrangementTraits_2 (ArrangementXMonotoneTraits_2 with Has_left_category and
+// Has_merge_category true, oblivious boundary sides). Every predicate is decided exactly on real algebraic
+// numbers (Algebraic_real); floating point only filters. See doc/arrangement_traits.md.
+#ifndef BEZOUTIAN_ARR_RATIONAL_BEZIER_TRAITS_2_H
+#define BEZOUTIAN_ARR_RATIONAL_BEZIER_TRAITS_2_H
+
+#include <bezoutian/Algebraic_real.h>
+#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/Rational_bezier_curve.h>
+#include <bezoutian/Root_isolation.h>
+#include <bezoutian/internal/arr_bezier_exact.h>
+
+#include <CGAL/enum.h>
+#include <CGAL/tags.h>
+#include <CGAL/Arr_enums.h>
+#include <CGAL/Arr_tags.h>
+
+#include <boost/variant.hpp>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <utility>
+#include <vector>
+
+namespace bezoutian {
+
+/// \brief A point of the arrangement: exact algebraic coordinates, plus the curves and parameters it is known
+/// to lie at (used as a fast path by the predicates; never needed for correctness).
+class Arr_bezier_point_2 {
+ public:
+  using Supporting = internal::Arr_bezier_supporting_curve;
+  using Origin = std::pair<std::shared_ptr<const Supporting>, Algebraic_real>;
+
+  /// The origin (0,0).
+  Arr_bezier_point_2() : rep_(std::make_shared<Rep>()) {}
+  /// The rational point (x, y).
+  Arr_bezier_point_2(const Rational& x, const Rational& y) : rep_(std::make_shared<Rep>()) {
+    rep_->x = Algebraic_real(x);
+    rep_->y = Algebraic_real(y);
+  }
+  /// The point with the given exact coordinates.
+  Arr_bezier_point_2(const Algebraic_real& x, const Algebraic_real& y) : rep_(std::make_shared<Rep>()) {
+    rep_->x = x;
+    rep_->y = y;
+  }
+  /// The point of a supporting curve at parameter t (coordinates computed exactly).
+  Arr_bezier_point_2(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) : rep_(std::make_shared<Rep>()) {
+    rep_->x = internal::arr_value_at(s->num[0], s->den[0], t);
+    rep_->y = internal::arr_value_at(s->num[1], s->den[1], t);
+    rep_->origins.push_back({s, t});
+  }
+
+  const Algebraic_real& x() const { return rep_->x; }
+  const Algebraic_real& y() const { return rep_->y; }
+  /// Double approximations (nearest doubles).
+  double approximate_x() const { return rep_->x.to_double(); }
+  double approximate_y() const { return rep_->y.to_double(); }
+  const std::vector<Origin>& origins() const { return rep_->origins; }
+  /// Records that the point lies on s at parameter t (the caller guarantees it).
+  void add_origin(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) const {
+    for (const Origin& o : rep_->origins)
+      if (o.first == s && internal::Algebraic_real_access::same_representation(o.second, t)) return;
+    rep_->origins.push_back({s, t});
+  }
+  bool is_same(const Arr_bezier_point_2& o) const { return rep_ == o.rep_; }
+
+  friend std::ostream& operator<<(std::ostream& os, const Arr_bezier_point_2& p) {
+    return os << "(" << p.approximate_x() << ", " << p.approximate_y() << ")";
+  }
+
+ private:
+  struct Rep {
+    Algebraic_real x, y;
+    std::vector<Origin> origins;
+  };
+  std::shared_ptr<Rep> rep_;
+};
+
+/// \brief An x-monotone arc: the supporting curve restricted to a parameter range [t0, t1] (t0 < t1), with its
+/// end points. Vertical arcs (x constant) are y-monotone.
+class Arr_bezier_x_monotone_curve_2 {
+ public:
+  using Supporting = internal::Arr_bezier_supporting_curve;
+  using Point_2 = Arr_bezier_point_2;
+  using Multiplicity = unsigned int;
+
+  Arr_bezier_x_monotone_curve_2() = default;
+  /// The arc of s on [t0, t1] with the given end points; `increasing` says whether x (y for vertical arcs)
+  /// increases with the parameter; `directed_right` whether the arc is directed from its lexicographically
+  /// smaller end (Construct_opposite_2 flips it).
+  Arr_bezier_x_monotone_curve_2(std::shared_ptr<const Supporting> s, const Algebraic_real& t0, const Algebraic_real& t1,
+                                const Point_2& p0, const Point_2& p1, bool increasing)
+      : s_(std::move(s)), t0_(t0), t1_(t1), p0_(p0), p1_(p1), increasing_(increasing), directed_right_(true) {}
+
+  const std::shared_ptr<const Supporting>& supporting() const { return s_; }
+  const Rational_bezier_curve_2<Rational>& supporting_curve() const { return s_->curve; }
+  const Algebraic_real& parameter_min() const { return t0_; }
+  const Algebraic_real& parameter_max() const { return t1_; }
+  const Point_2& point_at_min_parameter() const { return p0_; }
+  const Point_2& point_at_max_parameter() const { return p1_; }
+  bool is_vertical() const { return s_->vertical; }
+  bool is_increasing() const { return increasing_; }
+  bool is_directed_right() const { return directed_right_; }
+  /// Lexicographically smallest / largest end.
+  const Point_2& left() const { return increasing_ ? p0_ : p1_; }
+  const Point_2& right() const { return increasing_ ? p1_ : p0_; }
+  const Point_2& source() const { return directed_right_ ? left() : right(); }
+  const Point_2& target() const { return directed_right_ ? right() : left(); }
+  Arr_bezier_x_monotone_curve_2 opposite() const {
+    Arr_bezier_x_monotone_curve_2 c = *this;
+    c.directed_right_ = !directed_right_;
+    return c;
+  }
+
+  /// A polyline through n+1 points of the arc (doubles, for drawing), from the min-parameter end.
+  std::vector<std::pair<double, double>> polyline(int n = 32) const {
+    std::vector<std::pair<double, double>> out;
+    const double a = t0_.to_double(), b = t1_.to_double();
+    out.push_back({p0_.approximate_x(), p0_.approximate_y()});
+    for (int i = 1; i < n; ++i) {
+      const auto q = s_->curve.evaluate(a + (b - a) * i / n);
+      out.push_back({q[0], q[1]});
+    }
+    out.push_back({p1_.approximate_x(), p1_.approximate_y()});
+    return out;
+  }
+
+  friend std::ostream& operator<<(std::ostream& os, const Arr_bezier_x_monotone_curve_2& c) {
+    return os << "[curve " << c.s_->id << " t in [" << c.t0_.to_double() << ", " << c.t1_.to_double() << "]: "
+              << c.p0_ << " -> " << c.p1_ << "]";
+  }
+
+ private:
+  std::shared_ptr<const Supporting> s_;
+  Algebraic_real t0_, t1_;
+  Point_2 p0_, p1_;
+  bool increasing_ = true;
+  bool directed_right_ = true;
+};
+
+/// \brief Model of CGAL's ArrangementTraits_2 (and ArrangementDirectionalXMonotoneTraits_2) for planar rational
+/// Bezier curves with exact rational control points and positive weights.
+///
+/// Curve_2 is Rational_bezier_curve_2<Rational>. Points have exact algebraic coordinates (Algebraic_real):
+/// a point of curve C at an algebraic parameter t of defining polynomial p has x = X(t)/W(t) with defining
+/// polynomial Res_t(X - x W, p) (internal/arr_bezier_exact.h). Intersections come from intersect_curves
+/// (certified, du-1989 ch. 4), cached per pair of supporting curves; the traits object and its copies share
+/// the cache. Objects are not thread-safe (shared lazily refined numbers).
+class Arr_rational_bezier_traits_2 {
+ public:
+  using Curve_2 = Rational_bezier_curve_2<Rational>;
+  using Point_2 = Arr_bezier_point_2;
+  using X_monotone_curve_2 = Arr_bezier_x_monotone_curve_2;
+  using Multiplicity = unsigned int;
+  using Supporting = internal::Arr_bezier_supporting_curve;
+
+  using Has_left_category = CGAL::Tag_true;
+  using Has_merge_category = CGAL::Tag_true;
+  using Has_do_intersect_category = CGAL::Tag_false;
+  using Left_side_category = CGAL::Arr_oblivious_side_tag;
+  using Bottom_side_category = CGAL::Arr_oblivious_side_tag;
+  using Top_side_category = CGAL::Arr_oblivious_side_tag;
+  using Right_side_category = CGAL::Arr_oblivious_side_tag;
+
+  Arr_rational_bezier_traits_2() : cache_(std::make_shared<Cache>()) {}
+
+  /// One intersection of two supporting curves: the point and its parameters on both.
+  struct Cached_point {
+    Point_2 p;
+    Algebraic_real s, t;
+    bool tangent;
+  };
+  struct Cached_overlap {
+    Algebraic_real s0, s1, t0, t1;
+  };
+  struct Pair_entry {
+    std::vector<Cached_point> points;
+    std::vector<Cached_overlap> overlaps;
+  };
+
+  /// Intersections of the supporting curves a and b (a == b: self-intersections, s < t), oriented so that s is
+  /// the parameter on a. Computed once per unordered pair.
+  Pair_entry intersections(const std::shared_ptr<const Supporting>& a, const std::shared_ptr<const Supporting>& b) const {
+    const bool swap = a->id > b->id;
+    const auto key = swap ? std::make_pair(b->id, a->id) : std::make_pair(a->id, b->id);
+    auto it = cache_->pairs.find(key);
+    if (it == cache_->pairs.end()) {
+      const auto& A = swap ? b : a;
+      const auto& B = swap ? a : b;
+      Curve_intersection_result r;
+      try {
+        r = A == B ? self_intersections(A->curve) : intersect_curves(A->curve, B->curve);
+      } catch (const Invalid_input&) {
+        throw;
+      } catch (const Error& e) {
+        throw Invalid_input(std::string("Arr_rational_bezier_traits_2: unsupported input: ") + e.what());
+      }
+      Pair_entry e;
+      for (const auto& ip : r.points) {
+        Point_2 p(A, ip.s);
+        p.add_origin(B, ip.t);
+        e.points.push_back({p, ip.s, ip.t, ip.tangent});
+      }
+      for (const auto& o : r.overlaps) e.overlaps.push_back({o.s0, o.s1, o.t0, o.t1});
+      it = cache_->pairs.emplace(key, std::move(e)).first;
+    }
+    if (!swap) return it->second;
+    Pair_entry e = it->second;
+    for (auto& c : e.points) std::swap(c.s, c.t);
+    for (auto& o : e.overlaps) {
+      std::swap(o.s0, o.t0);
+      std::swap(o.s1, o.t1);
+    }
+    return e;
+  }
+
+  // ------------------------------------------------------------------------------------------- basic predicates
+  static int cmp_x(const Point_2& p, const Point_2& q) {
+    if (p.is_same(q)) return 0;
+    return p.x().compare(q.x());
+  }
+  static int cmp_xy(const Point_2& p, const Point_2& q) {
+    if (p.is_same(q)) return 0;
+    const int c = p.x().compare(q.x());
+    return c != 0 ? c : p.y().compare(q.y());
+  }
+  static CGAL::Comparison_result res(int c) { return c < 0 ? CGAL::SMALLER : (c > 0 ? CGAL::LARGER : CGAL::EQUAL); }
+
+  class Compare_x_2 {
+   public:
+    CGAL::Comparison_result operator()(const Point_2& p, const Point_2& q) const { return res(cmp_x(p, q)); }
+  };
+  class Compare_xy_2 {
+   public:
+    CGAL::Comparison_result operator()(const Point_2& p, const Point_2& q) const { return res(cmp_xy(p, q)); }
+  };
+  class Construct_min_vertex_2 {
+   public:
+    const Point_2& operator()(const X_monotone_curve_2& c) const { return c.left(); }
+  };
+  class Construct_max_vertex_2 {
+   public:
+    const Point_2& operator()(const X_monotone_curve_2& c) const { return c.right(); }
+  };
+  class Is_vertical_2 {
+   public:
+    bool operator()(const X_monotone_curve_2& c) const { return c.is_vertical(); }
+  };
+
+  /// Parameter of the arc at the point p (p on the arc, or at least x(p) in its x-range for non-vertical arcs).
+  static Algebraic_real parameter_of(const X_monotone_curve_2& c, const Point_2& p) {
+    for (const auto& o : p.origins())
+      if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return o.second;
+    if (cmp_xy(p, c.point_at_min_parameter()) == 0) return c.parameter_min();
+    if (cmp_xy(p, c.point_at_max_parameter()) == 0) return c.parameter_max();
+    const int k = c.is_vertical() ? 1 : 0;
+    const Algebraic_real& v = k == 0 ? p.x() : p.y();
+    auto r = internal::arr_parameters_at(*c.supporting(), k, v, c.parameter_min(), c.parameter_max());
+    if (r.size() != 1) throw Error("Arr_rational_bezier_traits_2: point not in the range of the arc");
+    p.add_origin(c.supporting(), r[0]);
+    return r[0];
+  }
+
+  /// Sign of y(p) - y(arc at x(p)) (p in the x-range of the non-vertical arc).
+  static int compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
+    if (c.is_vertical()) {
+      const int lo = p.y().compare(c.left().y());
+      if (lo < 0) return -1;
+      const int hi = p.y().compare(c.right().y());
+      return hi > 0 ? 1 : 0;
+    }
+    for (const auto& o : p.origins())
+      if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return 0;
+    for (const Point_2* e : {&c.left(), &c.right()})
+      if (cmp_x(p, *e) == 0) return p.y().compare(e->y());
+    auto r = internal::arr_parameters_at(*c.supporting(), 0, p.x(), c.parameter_min(), c.parameter_max());
+    if (r.size() != 1) throw Error("Arr_rational_bezier_traits_2: compare_y_at_x outside the x-range of the arc");
+    const int s = -internal::arr_compare_value(c.supporting()->num[1], c.supporting()->den[1], r[0], p.y());
+    if (s == 0) p.add_origin(c.supporting(), r[0]);
+    return s;
+  }
+
+  class Compare_y_at_x_2 {
+   public:
+    CGAL::Comparison_result operator()(const Point_2& p, const X_monotone_curve_2& c) const {
+      return res(compare_y_at_x(p, c));
+    }
+  };
+
+  /// y of the non-vertical arc at the rational abscissa x (in its x-range), exact.
+  static Algebraic_real y_at(const X_monotone_curve_2& c, const Rational& x) {
+    auto r = internal::arr_parameters_at(*c.supporting(), 0, Algebraic_real(x), c.parameter_min(), c.parameter_max());
+    if (r.size() != 1) throw Error("Arr_rational_bezier_traits_2: abscissa outside the x-range of the arc");
+    return internal::arr_value_at(c.supporting()->num[1], c.supporting()->den[1], r[0]);
+  }
+
+  /// Order of two non-vertical arcs through p just right (right = true) or left of p. A rational abscissa x* is
+  /// chosen strictly between x(p) and every other abscissa where the supporting curves meet or an arc ends, so
+  /// that the two arcs neither cross nor end on the open slab between x(p) and x*; comparing their exact
+  /// ordinates at x* gives the answer (equal ordinates there mean an overlap, hence EQUAL).
+  int compare_y_near(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Point_2& p, bool right) const {
+    const int dir = right ? 1 : -1;
+    // A vertical arc at p lies (lexicographically) just above p on the right side, just below it on the left.
+    if (c1.is_vertical() || c2.is_vertical()) return (int(c1.is_vertical()) - int(c2.is_vertical())) * dir;
+    Algebraic_real bound = right ? (c1.right().x() < c2.right().x() ? c1.right().x() : c2.right().x())
+                                 : (c1.left().x() > c2.left().x() ? c1.left().x() : c2.left().x());
+    auto consider = [&](const Point_2& q) {
+      if (q.is_same(p)) return;
+      const int side = q.x().compare(p.x()) * dir;
+      if (side > 0 && (q.x().compare(bound) * dir) < 0) bound = q.x();
+    };
+    const Pair_entry e = intersections(c1.supporting(), c2.supporting());
+    for (const auto& ip : e.points) consider(ip.p);
+    for (const auto& o : e.overlaps)
+      for (const Algebraic_real* t : {&o.s0, &o.s1}) consider(Point_2(c1.supporting(), *t));
+    const Rational xs = p.x().rational_between(bound);
+    const Algebraic_real y1 = y_at(c1, xs), y2 = y_at(c2, xs);
+    return y1.compare(y2);
+  }
+
+  class Compare_y_at_x_left_2 {
+   public:
+    explicit Compare_y_at_x_left_2(const Arr_rational_bezier_traits_2* t) : tr_(t) {}
+    CGAL::Comparison_result operator()(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Point_2& p) const {
+      return res(tr_->compare_y_near(c1, c2, p, false));
+    }
+   private:
+    const Arr_rational_bezier_traits_2* tr_;
+  };
+  class Compare_y_at_x_right_2 {
+   public:
+    explicit Compare_y_at_x_right_2(const Arr_rational_bezier_traits_2* t) : tr_(t) {}
+    CGAL::Comparison_result operator()(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Point_2& p) const {
+      return res(tr_->compare_y_near(c1, c2, p, true));
+    }
+   private:
+    const Arr_rational_bezier_traits_2* tr_;
+  };
+
+  class Equal_2 {
+   public:
+    explicit Equal_2(const Arr_rational_bezier_traits_2* t) : tr_(t) {}
+    bool operator()(const Point_2& p, const Point_2& q) const { return cmp_xy(p, q) == 0; }
+    bool operator()(const X_monotone_curve_2& a, const X_monotone_curve_2& b) const {
+      if (cmp_xy(a.left(), b.left()) != 0 || cmp_xy(a.right(), b.right()) != 0) return false;
+      if (a.supporting() == b.supporting()) return a.parameter_min() == b.parameter_min() && a.parameter_max() == b.parameter_max();
+      std::vector<boost::variant<std::pair<Point_2, Multiplicity>, X_monotone_curve_2>> out;
+      tr_->intersect(a, b, std::back_inserter(out));
+      for (const auto& v : out)
+        if (const X_monotone_curve_2* c = boost::get<X_monotone_curve_2>(&v))
+          return cmp_xy(c->left(), a.left()) == 0 && cmp_xy(c->right(), a.right()) == 0;
+      return false;
+    }
+   private:
+    const Arr_rational_bezier_traits_2* tr_;
+  };
+
+  // ------------------------------------------------------------------------------------------- constructions
+  /// The arc of s on [t0, t1] (t0 < t1) with known end points.
+  static X_monotone_curve_2 make_arc(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t0,
+                                     const Algebraic_real& t1, const Point_2& p0, const Point_2& p1) {
+    const int c = s->vertical ? p0.y().compare(p1.y()) : p0.x().compare(p1.x());
+    if (c == 0) throw Error("Arr_rational_bezier_traits_2: degenerate arc");
+    return X_monotone_curve_2(s, t0, t1, p0, p1, c < 0);
+  }
+
+  /// Splits a curve at the zeros in (0,1) of the derivative of x (of y for vertical curves): vertical
+  /// tangents, x-extrema and singular points. Each piece is then strictly x-monotone (y-monotone if vertical).
+  class Make_x_monotone_2 {
+   public:
+    template <class OutputIterator>
+    OutputIterator operator()(const Curve_2& c, OutputIterator oi) const {
+      using Result = boost::variant<Point_2, X_monotone_curve_2>;
+      const auto s = internal::make_supporting_curve(c);
+      const Ci_poly1& d = s->speed[s->vertical ? 1 : 0];
+      std::vector<Algebraic_real> ts{Algebraic_real(0)};
+      for (const Isolated_root& r : isolate_real_roots(d, Rational(0), Rational(1)))
+        if (r.root > 0 && r.root < 1) ts.push_back(r.root);
+      ts.push_back(Algebraic_real(1));
+      std::vector<Point_2> ps;
+      for (const auto& t : ts) ps.push_back(Point_2(s, t));
+      for (std::size_t i = 0; i + 1 < ts.size(); ++i) *oi++ = Result(make_arc(s, ts[i], ts[i + 1], ps[i], ps[i + 1]));
+      return oi;
+    }
+   private:
+    using Ci_poly1 = internal::Ci_poly1;
+  };
+
+  class Split_2 {
+   public:
+    void operator()(const X_monotone_curve_2& c, const Point_2& p, X_monotone_curve_2& c1, X_monotone_curve_2& c2) const {
+      const Algebraic_real t = parameter_of(c, p);
+      X_monotone_curve_2 a = make_arc(c.supporting(), c.parameter_min(), t, c.point_at_min_parameter(), p);
+      X_monotone_curve_2 b = make_arc(c.supporting(), t, c.parameter_max(), p, c.point_at_max_parameter());
+      if (!c.is_directed_right()) {
+        a = a.opposite();
+        b = b.opposite();
+      }
+      if (cmp_xy(a.left(), b.left()) < 0) {
+        c1 = a;
+        c2 = b;
+      } else {
+        c1 = b;
+        c2 = a;
+      }
+    }
+  };
+
+  /// Intersection points (sorted lexicographically, with multiplicity 1 for transversal crossings in the
+  /// interior of both arcs and 0 = unknown otherwise) and overlapping sub-arcs.
+  template <class OutputIterator>
+  OutputIterator intersect(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, OutputIterator oi) const {
+    using Ip = std::pair<Point_2, Multiplicity>;
+    using Result = boost::variant<Ip, X_monotone_curve_2>;
+    std::vector<std::pair<Point_2, Result>> out;  // key: lexicographic position
+    auto inside = [](const Algebraic_real& t, const X_monotone_curve_2& c) {
+      return t >= c.parameter_min() && t <= c.parameter_max();
+    };
+    auto interior = [](const Algebraic_real& t, const X_monotone_curve_2& c) {
+      return t > c.parameter_min() && t < c.parameter_max();
+    };
+    const auto& A = c1.supporting();
+    const auto& B = c2.supporting();
+    const Pair_entry e = intersections(A, B);
+    if (A == B) {
+      if (c1.parameter_min() == c2.parameter_min() && c1.parameter_max() == c2.parameter_max()) {
+        *oi++ = Result(c1);
+        return oi;
+      }
+      // Self-intersection points (s < t) on one arc each; shared ends of adjacent arcs.
+      for (const auto& ip : e.points)
+        if ((inside(ip.s, c1) && inside(ip.t, c2)) || (inside(ip.t, c1) && inside(ip.s, c2)))
+          out.push_back({ip.p, Result(Ip(ip.p, 0))});
+      if (c1.parameter_max() == c2.parameter_min())
+        out.push_back({c1.point_at_max_parameter(), Result(Ip(c1.point_at_max_parameter(), 0))});
+      if (c2.parameter_max() == c1.parameter_min())
+        out.push_back({c1.point_at_min_parameter(), Result(Ip(c1.point_at_min_parameter(), 0))});
+      // Overlapping parameter ranges of one curve (cannot happen for arcs of one arrangement).
+      if (c1.parameter_min() < c2.parameter_max() && c2.parameter_min() < c1.parameter_max()) {
+        const Algebraic_real lo = c1.parameter_min() > c2.parameter_min() ? c1.parameter_min() : c2.parameter_min();
+        const Algebraic_real hi = c1.parameter_max() < c2.parameter_max() ? c1.parameter_max() : c2.parameter_max();
+        out.clear();
+        X_monotone_curve_2 o = make_arc(A, lo, hi, Point_2(A, lo), Point_2(A, hi));
+        out.push_back({o.left(), Result(o)});
+      }
+    } else {
+      for (const auto& ip : e.points) {
+        if (!inside(ip.s, c1) || !inside(ip.t, c2)) continue;
+        const bool transversal = !ip.tangent && interior(ip.s, c1) && interior(ip.t, c2);
+        out.push_back({ip.p, Result(Ip(ip.p, transversal ? 1u : 0u))});
+      }
+      for (const auto& o : e.overlaps) overlap_part(c1, c2, o, out);
+    }
+    std::sort(out.begin(), out.end(), [](const std::pair<Point_2, Result>& a, const std::pair<Point_2, Result>& b) {
+      return cmp_xy(a.first, b.first) < 0;
+    });
+    // A point reported with an overlap that starts or ends there is dropped (CGAL expects disjoint objects).
+    std::vector<std::pair<Point_2, Result>> clean;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const Ip* ip = boost::get<Ip>(&out[i].second);
+      bool covered = false;
+      if (ip)
+        for (const auto& q : out)
+          if (const X_monotone_curve_2* c = boost::get<X_monotone_curve_2>(&q.second))
+            if (cmp_xy(c->left(), ip->first) <= 0 && cmp_xy(ip->first, c->right()) <= 0) covered = true;
+      if (ip && !clean.empty()) {
+        const Ip* prev = boost::get<Ip>(&clean.back().second);
+        if (prev && cmp_xy(prev->first, ip->first) == 0) covered = true;
+      }
+      if (!covered) clean.push_back(out[i]);
+    }
+    for (auto& r : clean) *oi++ = r.second;
+    return oi;
+  }
+
+  /// The common part of c1 and c2 inside one overlap of their supporting curves.
+  void overlap_part(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Cached_overlap& o,
+                    std::vector<std::pair<Point_2, boost::variant<std::pair<Point_2, Multiplicity>, X_monotone_curve_2>>>& out) const {
+    using Ip = std::pair<Point_2, Multiplicity>;
+    const auto& A = c1.supporting();
+    const auto& B = c2.supporting();
+    auto mx = [](const Algebraic_real& a, const Algebraic_real& b) { return a > b ? a : b; };
+    auto mn = [](const Algebraic_real& a, const Algebraic_real& b) { return a < b ? a : b; };
+    const Algebraic_real smin = mn(o.s0, o.s1), smax = mx(o.s0, o.s1);
+    const Algebraic_real tmin = mn(o.t0, o.t1), tmax = mx(o.t0, o.t1);
+    const Algebraic_real tl = mx(c2.parameter_min(), tmin), th = mn(c2.parameter_max(), tmax);
+    if (tl > th) return;
+    // the s on A of the points of B at tl, th
+    auto to_s = [&](const Algebraic_real& t) -> Algebraic_real {
+      if (t == o.t0) return o.s0;
+      if (t == o.t1) return o.s1;
+      const Point_2 q = t == c2.parameter_min() ? c2.point_at_min_parameter()
+                                                : (t == c2.parameter_max() ? c2.point_at_max_parameter() : Point_2(B, t));
+      const int k = A->vertical ? 1 : 0;
+      auto r = internal::arr_parameters_at(*A, k, k == 0 ? q.x() : q.y(), smin, smax, k == 0 ? &q.y() : &q.x());
+      if (r.size() != 1) throw Invalid_input("Arr_rational_bezier_traits_2: overlap through a self-intersection (unsupported)");
+      return r[0];
+    };
+    const Algebraic_real u = to_s(tl), v = to_s(th);
+    const Algebraic_real lo = mx(mx(c1.parameter_min(), smin), mn(u, v));
+    const Algebraic_real hi = mn(mn(c1.parameter_max(), smax), mx(u, v));
+    const int c = lo.compare(hi);
+    if (c > 0) return;
+    auto pt = [&](const Algebraic_real& t) {
+      if (t == c1.parameter_min()) return c1.point_at_min_parameter();
+      if (t == c1.parameter_max()) return c1.point_at_max_parameter();
+      return Point_2(A, t);
+    };
+    if (c == 0) {
+      const Point_2 p = pt(lo);
+      out.push_back({p, Ip(p, 0)});
+      return;
+    }
+    X_monotone_curve_2 arc = make_arc(A, lo, hi, pt(lo), pt(hi));
+    out.push_back({arc.left(), arc});
+  }
+
+  class Intersect_2 {
+   public:
+    explicit Intersect_2(const Arr_rational_bezier_traits_2* t) : tr_(t) {}
+    template <class OutputIterator>
+    OutputIterator operator()(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, OutputIterator oi) const {
+      return tr_->intersect(c1, c2, oi);
+    }
+   private:
+    const Arr_rational_bezier_traits_2* tr_;
+  };
+
+  class Are_mergeable_2 {
+   public:
+    bool operator()(const X_monotone_curve_2& a, const X_monotone_curve_2& b) const {
+      if (a.supporting() != b.supporting() || a.is_increasing() != b.is_increasing()) return false;
+      if (a.is_directed_right() != b.is_directed_right()) return false;
+      return a.parameter_max() == b.parameter_min() || b.parameter_max() == a.parameter_min();
+    }
+  };
+  class Merge_2 {
+   public:
+    void operator()(const X_monotone_curve_2& a, const X_monotone_curve_2& b, X_monotone_curve_2& c) const {
+      if (!Are_mergeable_2()(a, b)) throw Invalid_input("Arr_rational_bezier_traits_2: curves are not mergeable");
+      const X_monotone_curve_2& f = a.parameter_max() == b.parameter_min() ? a : b;
+      const X_monotone_curve_2& g = a.parameter_max() == b.parameter_min() ? b : a;
+      c = X_monotone_curve_2(f.supporting(), f.parameter_min(), g.parameter_max(), f.point_at_min_parameter(),
+                             g.point_at_max_parameter(), f.is_increasing());
+      if (!a.is_directed_right()) c = c.opposite();
+    }
+  };
+
+  class Construct_opposite_2 {
+   public:
+    X_monotone_curve_2 operator()(const X_monotone_curve_2& c) const { return c.opposite(); }
+  };
+  class Compare_endpoints_xy_2 {
+   public:
+    CGAL::Comparison_result operator()(const X_monotone_curve_2& c) const {
+      return c.is_directed_right() ? CGAL::SMALLER : CGAL::LARGER;
+    }
+  };
+
+  /// Approximation of a point coordinate (i = 0: x, 1: y) as a double.
+  class Approximate_2 {
+   public:
+    double operator()(const Point_2& p, int i) const { return i == 0 ? p.approximate_x() : p.approximate_y(); }
+  };
+
+  Compare_x_2 compare_x_2_object() const { return Compare_x_2(); }
+  Compare_xy_2 compare_xy_2_object() const { return Compare_xy_2(); }
+  Construct_min_vertex_2 construct_min_vertex_2_object() const { return Construct_min_vertex_2(); }
+  Construct_max_vertex_2 construct_max_vertex_2_object() const { return Construct_max_vertex_2(); }
+  Is_vertical_2 is_vertical_2_object() const { return Is_vertical_2(); }
+  Compare_y_at_x_2 compare_y_at_x_2_object() const { return Compare_y_at_x_2(); }
+  Compare_y_at_x_left_2 compare_y_at_x_left_2_object() const { return Compare_y_at_x_left_2(this); }
+  Compare_y_at_x_right_2 compare_y_at_x_right_2_object() const { return Compare_y_at_x_right_2(this); }
+  Equal_2 equal_2_object() const { return Equal_2(this); }
+  Make_x_monotone_2 make_x_monotone_2_object() const { return Make_x_monotone_2(); }
+  Split_2 split_2_object() const { return Split_2(); }
+  Intersect_2 intersect_2_object() const { return Intersect_2(this); }
+  Are_mergeable_2 are_mergeable_2_object() const { return Are_mergeable_2(); }
+  Merge_2 merge_2_object() const { return Merge_2(); }
+  Construct_opposite_2 construct_opposite_2_object() const { return Construct_opposite_2(); }
+  Compare_endpoints_xy_2 compare_endpoints_xy_2_object() const { return Compare_endpoints_xy_2(); }
+  Approximate_2 approximate_2_object() const { return Approximate_2(); }
+
+  /// Number of pairs of supporting curves whose intersections are cached.
+  std::size_t cached_pairs() const { return cache_->pairs.size(); }
+
+ private:
+  using Ci_poly1 = internal::Ci_poly1;
+  struct Cache {
+    std::map<std::pair<std::size_t, std::size_t>, Pair_entry> pairs;
+  };
+  std::shared_ptr<Cache> cache_;
+};
+
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_ARR_RATIONAL_BEZIER_TRAITS_2_H

@@ -1,0 +1,224 @@
+// Arrangement_2 with Arr_rational_bezier_traits_2: hand-made configurations with counts derived by hand (Euler's
+// formula V - E + F = 1 + components), tangencies, rational circles compared with CGAL's conic traits counts,
+// and seeded random polynomial cubics cross-checked against CGAL's own Arr_Bezier_curve_traits_2.
+#include <bezoutian/Arr_rational_bezier_traits_2.h>
+
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Arr_naive_point_location.h>
+
+#include <CGAL/Cartesian.h>
+#include <CGAL/CORE_algebraic_number_traits.h>
+#include <CGAL/Arr_Bezier_curve_traits_2.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
+
+using namespace bezoutian;
+
+namespace {
+
+using Traits = Arr_rational_bezier_traits_2;
+using Arr = CGAL::Arrangement_2<Traits>;
+using Curve = Traits::Curve_2;
+using Pt = Curve::Point;
+
+struct Counts {
+  std::size_t v, e, f, iso;
+  bool valid;
+};
+
+Counts counts_of(const std::vector<Curve>& cs, bool incremental = false) {
+  Traits tr;
+  Arr arr(&tr);
+  if (incremental)
+    for (const Curve& c : cs) CGAL::insert(arr, c);
+  else
+    CGAL::insert(arr, cs.begin(), cs.end());
+  return {arr.number_of_vertices(), arr.number_of_edges(), arr.number_of_faces(), arr.number_of_isolated_vertices(),
+          arr.is_valid()};
+}
+
+Curve poly(const std::vector<std::pair<Rational, Rational>>& v) {
+  std::vector<Pt> p;
+  for (const auto& q : v) p.push_back(Pt{q.first, q.second});
+  return Curve(p);
+}
+
+// Quarter k (0..3) of the circle of centre (cx, cy) and radius r: the rational parametrization
+// ((1-u^2), 2u) / (1+u^2), u in [0,1], rotated by k quarter turns. Bernstein form: weights 1, 1, 2 and control
+// points (1,0), (1,1), (0,1) for the first quarter.
+Curve quarter(const Rational& cx, const Rational& cy, const Rational& r, int k) {
+  std::vector<std::pair<Rational, Rational>> base{{1, 0}, {1, 1}, {0, 1}};
+  std::vector<Pt> p;
+  for (auto q : base) {
+    for (int i = 0; i < k; ++i) q = {-q.second, q.first};
+    p.push_back(Pt{cx + r * q.first, cy + r * q.second});
+  }
+  return Curve(p, {Rational(1), Rational(1), Rational(2)});
+}
+
+std::vector<Curve> circle(const Rational& cx, const Rational& cy, const Rational& r) {
+  std::vector<Curve> c;
+  for (int k = 0; k < 4; ++k) c.push_back(quarter(cx, cy, r, k));
+  return c;
+}
+
+void check(const std::vector<Curve>& cs, std::size_t v, std::size_t e, std::size_t f) {
+  for (bool inc : {false, true}) {
+    const Counts c = counts_of(cs, inc);
+    INFO("incremental " << inc);
+    CHECK(c.valid);
+    CHECK(c.v == v);
+    CHECK(c.e == e);
+    CHECK(c.f == f);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("arrangement traits: two crossing parabolas (irrational crossings)", "[arrangement]") {
+  // y = 4t(1-t) and y = 1 - 4t(1-t), x = 2t: crossings at 8t^2 - 8t + 1 = 0, t = (2 +- sqrt 2)/4.
+  check({poly({{0, 0}, {1, 2}, {2, 0}}), poly({{0, 1}, {1, -1}, {2, 1}})}, 6, 6, 2);
+}
+
+TEST_CASE("arrangement traits: mirror-image parabolas touching tangentially", "[arrangement]") {
+  // y = x^2 on [-1,2] and its mirror image across its tangent y = x - 1/4 at (1/2, 1/4), (x,y) -> (y+1/4, x-1/4).
+  // They touch only there (opposite sides of the tangent). The mirror image has a vertical tangent at the image
+  // of (0,0), (1/4,-1/4): V = 4 ends + touching point + vertical tangent, E = 2 + 3, one component: F = 1.
+  const Curve a = poly({{-1, 1}, {Rational(1, 2), -2}, {2, 4}});
+  const Curve b = poly({{Rational(5, 4), Rational(-5, 4)}, {Rational(-7, 4), Rational(1, 4)}, {Rational(17, 4), Rational(7, 4)}});
+  check({a, b}, 6, 5, 1);
+  // The mirror image moved by 1/8 towards the parabola crosses it twice near the old touching point instead.
+  const Curve b2 = poly({{Rational(9, 8), Rational(-9, 8)}, {Rational(-15, 8), Rational(3, 8)}, {Rational(33, 8), Rational(15, 8)}});
+  check({a, b2}, 7, 7, 2);
+}
+
+TEST_CASE("arrangement traits: triple-root tangency y = x^3 against y = 0", "[arrangement]") {
+  // (2t-1, (2t-1)^3): Bernstein control points (-1,-1), (-1/3,1), (1/3,-1), (1,1); the x-axis crosses it at the
+  // inflection (0,0) with multiplicity 3.
+  const Curve cubic = poly({{-1, -1}, {Rational(-1, 3), 1}, {Rational(1, 3), -1}, {1, 1}});
+  check({cubic, poly({{-1, 0}, {1, 0}})}, 5, 4, 1);
+  // y = 3x - 2 (x in [1/2, 3/2]) is tangent to y = x^3 at its end (1,1) (x^3 - 3x + 2 = (x-1)^2 (x+2)).
+  check({cubic, poly({{Rational(1, 2), Rational(-1, 2)}, {Rational(3, 2), Rational(5, 2)}})}, 3 + 1, 3, 1);
+}
+
+TEST_CASE("arrangement traits: curves meeting at end points", "[arrangement]") {
+  const Curve arch = poly({{0, 0}, {1, 2}, {2, 0}});  // apex (1,1) at t = 1/2
+  check({arch, poly({{2, 0}, {3, 2}, {4, 0}})}, 3, 2, 1);
+  // a vertical segment standing on the apex
+  check({arch, poly({{1, 1}, {1, 3}})}, 4, 3, 1);
+  // a horizontal segment tangent at the apex, starting there
+  check({arch, poly({{1, 1}, {3, 1}})}, 4, 3, 1);
+  // the same segment through the apex: tangent touching in the interior of both
+  check({arch, poly({{-1, 1}, {3, 1}})}, 5, 4, 1);
+  // closing the arch with its chord: one bounded face
+  check({arch, poly({{0, 0}, {2, 0}})}, 2, 2, 2);
+}
+
+TEST_CASE("arrangement traits: circles as rational quadratic arcs", "[arrangement]") {
+  // One circle: 4 arcs, 4 vertices, 2 faces.
+  check(circle(0, 0, 1), 4, 4, 2);
+  // Unit circles centred at (0,0) and (1,0) cross at (1/2, +-sqrt(3)/2) (irrational), each inside one arc of each
+  // circle: V = 8 + 2, E = 8 + 4, F = 4 (lens, two crescents, unbounded).
+  std::vector<Curve> two = circle(0, 0, 1), b = circle(1, 0, 1);
+  two.insert(two.end(), b.begin(), b.end());
+  check(two, 10, 12, 4);
+  // Externally tangent circles: radius 1 at (0,0) and radius 2 at (3,0) touch at (1,0), an arc end of both.
+  std::vector<Curve> t = circle(0, 0, 1), c = circle(3, 0, 2);
+  t.insert(t.end(), c.begin(), c.end());
+  check(t, 7, 8, 3);
+  // Internally tangent: radius 1 at (0,0), radius 2 at (1,0) touch at (-1,0), an arc end of both.
+  std::vector<Curve> in = circle(0, 0, 1), d = circle(1, 0, 2);
+  in.insert(in.end(), d.begin(), d.end());
+  check(in, 7, 8, 3);
+  // A circle and a parabola (mixed rational/polynomial): y = x^2 - 1/2 on [-2,2] crosses the unit circle
+  // where y^2 + y - 1/2 = 0, y = (-1 + sqrt 3)/2 (two points) and y = (-1 - sqrt 3)/2 < -1 (none): V = 4 + 2 + 2,
+  // E = 4 + 2 + 3, F = 2 - V + E.
+  std::vector<Curve> m = circle(0, 0, 1);
+  m.push_back(poly({{-2, Rational(7, 2)}, {0, Rational(-9, 2)}, {2, Rational(7, 2)}}));
+  check(m, 8, 9, 3);
+}
+
+TEST_CASE("arrangement traits: overlapping pieces of one parabola", "[arrangement]") {
+  const Curve arch = poly({{0, 0}, {1, 2}, {2, 0}});
+  const Curve inner = arch.restriction(Rational(1, 4), Rational(3, 4));
+  const Curve ext = arch.restriction(Rational(1, 2), Rational(3, 2));
+  check({arch, inner}, 4, 3, 1);
+  check({arch, ext}, 4, 3, 1);
+  check({arch, inner, ext}, 6, 5, 1);
+  // reversed orientation overlap
+  check({arch, ext.reversed()}, 4, 3, 1);
+}
+
+TEST_CASE("arrangement traits: invalid input is rejected", "[arrangement]") {
+  Traits tr;
+  Arr arr(&tr);
+  const Curve neg({Pt{0, 0}, Pt{1, 1}, Pt{2, 0}}, {Rational(1), Rational(-1), Rational(1)});
+  CHECK_THROWS_AS(CGAL::insert(arr, neg), Invalid_input);
+  const Curve point({Pt{1, 1}, Pt{1, 1}});
+  CHECK_THROWS_AS(CGAL::insert(arr, point), Invalid_input);
+}
+
+namespace {
+
+// CGAL's own Bezier traits (polynomial curves only), as in CGAL's Bezier arrangement example.
+using Nt_traits = CGAL::CORE_algebraic_number_traits;
+using Cgal_rational = Nt_traits::Rational;
+using Rat_kernel = CGAL::Cartesian<Cgal_rational>;
+using Alg_kernel = CGAL::Cartesian<Nt_traits::Algebraic>;
+using Cgal_traits = CGAL::Arr_Bezier_curve_traits_2<Rat_kernel, Alg_kernel, Nt_traits>;
+using Cgal_arr = CGAL::Arrangement_2<Cgal_traits>;
+
+// n random polynomial curves of the given degree, integer control points in [0, 1000)^2 (raw mt19937 output,
+// reproducible everywhere).
+std::vector<std::vector<std::pair<long, long>>> random_nets(unsigned seed, int n, int degree) {
+  std::mt19937 g(seed);
+  std::vector<std::vector<std::pair<long, long>>> nets;
+  for (int i = 0; i < n; ++i) {
+    std::vector<std::pair<long, long>> net;
+    for (int j = 0; j <= degree; ++j) {
+      const long x = long(g() % 1000), y = long(g() % 1000);
+      net.push_back({x, y});
+    }
+    nets.push_back(net);
+  }
+  return nets;
+}
+
+}  // namespace
+
+TEST_CASE("arrangement traits: same V/E/F as CGAL's Bezier traits on random cubics", "[arrangement][cgal]") {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const auto nets = random_nets(seed, 6, 3);
+    std::vector<Curve> ours;
+    std::vector<Cgal_traits::Curve_2> theirs;
+    for (const auto& net : nets) {
+      std::vector<Pt> p;
+      std::vector<Rat_kernel::Point_2> q;
+      for (const auto& c : net) {
+        p.push_back(Pt{Rational(c.first), Rational(c.second)});
+        q.push_back(Rat_kernel::Point_2(Cgal_rational(c.first), Cgal_rational(c.second)));
+      }
+      ours.push_back(Curve(p));
+      theirs.push_back(Cgal_traits::Curve_2(q.begin(), q.end()));
+    }
+    const Counts a = counts_of(ours);
+    Cgal_traits ctr;
+    Cgal_arr carr(&ctr);
+    CGAL::insert(carr, theirs.begin(), theirs.end());
+    INFO("seed " << seed);
+    CHECK(a.valid);
+    CHECK(a.v == carr.number_of_vertices());
+    CHECK(a.e == carr.number_of_edges());
+    CHECK(a.f == carr.number_of_faces());
+    CHECK(a.iso == carr.number_of_isolated_vertices());
+    // incremental insertion gives the same arrangement
+    const Counts b = counts_of(ours, true);
+    CHECK(b.valid);
+    CHECK(b.v == a.v);
+    CHECK(b.e == a.e);
+    CHECK(b.f == a.f);
+  }
+}
