@@ -36,21 +36,22 @@ int main(int argc, char** argv) {
   const int n7 = argc > 2 ? std::atoi(argv[2]) : 10;
   const int n12 = argc > 3 ? std::atoi(argv[3]) : 2;
   const Curve_intersection_method methods[] = {Curve_intersection_method::default_method,
+                                                Curve_intersection_method::subresultant,
                                                 Curve_intersection_method::projection,
                                                 Curve_intersection_method::resolvent};
-  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / projection / resolvent\n", n);
+  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / subresultant / projection / resolvent\n", n);
   for (int rat = 1; rat >= 0; --rat) {
     std::printf("%s curves\n  deg  ", rat ? "rational" : "polynomial");
-    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                  ", k);
+    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                         ", k);
     std::printf("\n");
     for (int n2 = 2; n2 <= 6; ++n2) {
       std::printf("  3-%d ", n2);
       for (int k = 0; k <= 4; ++k) {
         if (k > n2 + 1) {  // the generator needs k <= degree_2 + 1 (blank in du-1989's tables too)
-          std::printf("      -/     -/     -  ");
+          std::printf("      -/     -/     -/     -  ");
           continue;
         }
-        std::vector<double> t[3];
+        std::vector<double> t[4];
         for (int i = 0; i < n; ++i) {
           Curve_problem_parameters par;
           par.degree_1 = 3;
@@ -60,16 +61,16 @@ int main(int argc, char** argv) {
           par.range = 16;
           par.seed = 100000UL * n2 + 1000UL * k + 10UL * i + rat;
           const auto p = generate_curve_problem<3>(par);
-          for (int m = 0; m < 3; ++m) t[m].push_back(time_ms(p, methods[m]));
+          for (int m = 0; m < 4; ++m) t[m].push_back(time_ms(p, methods[m]));
         }
-        std::printf(" %6.2f/%6.2f/%6.2f ", median(t[0]), median(t[1]), median(t[2]));
+        std::printf(" %6.2f/%6.2f/%6.2f/%6.2f ", median(t[0]), median(t[1]), median(t[2]), median(t[3]));
       }
       std::printf("\n");
     }
   }
   const int planar[][2] = {{3, 3}, {5, 5}, {7, n7}, {12, n12}};
   for (const auto& d : planar) {
-    std::vector<double> t[2];
+    std::vector<double> t[3];
     for (int i = 0; i < d[1]; ++i) {
       Curve_problem_parameters par;
       par.degree_1 = par.degree_2 = d[0];
@@ -80,9 +81,11 @@ int main(int argc, char** argv) {
       const auto p = generate_curve_problem<2>(par);
       t[0].push_back(time_ms(p, Curve_intersection_method::default_method));
       t[1].push_back(time_ms(p, Curve_intersection_method::projection));
+      if (d[0] <= 7) t[2].push_back(time_ms(p, Curve_intersection_method::subresultant));
     }
     std::printf("planar degree %d-%d, %d problems (2-4 known intersections, rational and polynomial): median %.2f ms "
-                "default, %.2f ms projection\n", d[0], d[0], d[1], median(t[0]), median(t[1]));
+                "default, %.2f ms projection, %.2f ms subresultant (not run above degree 7)\n", d[0], d[0], d[1],
+                median(t[0]), median(t[1]), median(t[2]));
   }
   return 0;
 }

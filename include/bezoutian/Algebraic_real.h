@@ -401,6 +401,19 @@ class Algebraic_real {
     // one fraction with denominator <= D fits, and it is then the simplest
     // one in the interval; D grows 2^8, 2^16, ... up to |lc|, so small
     // denominators are found after little refinement.
+    // Cheap half of resolve_rationality: is the root a fraction whose denominator has at most `bits` bits?
+    // (width <= 2^-2bits leaves at most one such fraction in the interval: the simplest one.)
+    void try_small_rational(std::size_t bits) {
+      if (exact) return;
+      Rational target;
+      mpq_set_ui(target.mpq(), 1, 1);
+      mpq_div_2exp(target.mpq(), target.mpq(), static_cast<mp_bitcnt_t>(2 * bits + 2));
+      refine_to_width(target);
+      if (exact) return;
+      const Rational s = internal::simplest_rational_between(lo, hi);
+      if (mpz_divisible_p(mpz_abs_lc().mpz(), mpq_denref(s.mpq()))) locate(s);
+    }
+    Integer mpz_abs_lc() const { return CGAL::abs(poly.lcoeff()); }
     void resolve_rationality(bool modular_test_done = false) {
       if (exact) return;
       if (!modular_test_done && internal::has_no_rational_root_modular(*c)) return;
@@ -486,6 +499,7 @@ struct Algebraic_real_access {
   static void resolve_rationality(const Algebraic_real& a, bool modular_test_done) {
     a.rep_->resolve_rationality(modular_test_done);
   }
+  static void try_small_rational(const Algebraic_real& a, std::size_t bits) { a.rep_->try_small_rational(bits); }
   static bool same_representation(const Algebraic_real& a, const Algebraic_real& b) { return a.rep_ == b.rep_; }
 };
 }  // namespace internal

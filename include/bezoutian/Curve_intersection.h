@@ -6,10 +6,12 @@
 #include <bezoutian/Bezout_matrix.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/Goldman_resolvent.h>
+#include <bezoutian/Polynomial_matrix_determinant.h>
 #include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/Weight_validity.h>
 #include <bezoutian/internal/curve_intersection_support.h>
+#include <bezoutian/internal/interval_krawczyk.h>
 
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
@@ -39,7 +41,10 @@ namespace bezoutian {
 /// How the eliminant polynomials R(s), T(t) are computed. Every strategy is followed by the same certified
 /// pairing (subresultant inversion, exact sign decisions), so all of them return identical answers.
 enum class Curve_intersection_method {
-  default_method,  ///< R = Res_t(F1,F2), T = Res_s(F1,F2) (subresultant sequence; 3D: a combination with F3)
+  default_method,  ///< the fast certified path: R(s) = det of the Bezout matrix of curve 2's (projected) implicit
+                   ///< equation evaluated on curve 1 (multi-modular determinant), partners from two of its cofactors
+                   ///< (du-1989 eq. 4.1, 4.3); configurations it cannot decide go to `subresultant`
+  subresultant,    ///< R = Res_t(F1,F2), T = Res_s(F1,F2) with the subresultant sequence (3D: a combination with F3)
   projection,      ///< R = f2(X1,Y1,W1): implicit equation of curve 2 (bezout_implicit_equation, du-1989 eq. 4.1)
                    ///< on curve 1, and symmetrically T (planar curves; space curves use the default)
   resolvent        ///< space curves with a curve of degree <= 3: R = gcd of Goldman's quadrics (du-1989 eq. 4.2/4.3)
@@ -87,7 +92,11 @@ class Curve_intersection_engine {
 
  public:
   Curve_intersection_engine(const Curve& a, const Curve& b, Curve_intersection_method m)
-      : c1_(a), c2_(b), method_(m), H1_(integer_power_form(a)), H2_(integer_power_form(b)) {}
+      : c1_(a), c2_(b), method_(m), H1_(integer_power_form(a)), H2_(integer_power_form(b)) {
+    for (const Form* H : {&H1_, &H2_})
+      for (const P1& f : *H)
+        for (int i = 0; i <= f.degree(); ++i) coefficient_bits_ = std::max(coefficient_bits_, long(f[i].bit_size()));
+  }
 
   Curve_intersection_result run() {
     check_no_pole(c1_);
@@ -99,6 +108,11 @@ class Curve_intersection_engine {
       return res;
     }
     if (disjoint_hulls()) return res;
+    if (method_ == Curve_intersection_method::default_method && fast_path(res)) {
+      sort_points(res);
+      return res;
+    }
+    res = Curve_intersection_result();
     std::vector<P2> F;
     for (int k = 1; k <= D; ++k) F.push_back(cross_term(H1_[k], H2_[0], H2_[k], H1_[0]));
     solve_system(F, res, /*allow_overlap=*/true);
@@ -178,6 +192,7 @@ class Curve_intersection_engine {
     }
   }
 
+
   // ---------------------------------------------------------------- eliminants
   struct Elimination {
     P2 G1, G2;       // the pair whose subresultants give the inversion
@@ -244,7 +259,7 @@ class Curve_intersection_engine {
 
   // R(s) from the strategy (default: the resultant already computed).
   P1 strategy_R(const Elimination& e, const Form& A, const Form& B) const {
-    if (method_ == Curve_intersection_method::default_method) return e.R;
+    if (plain_method()) return e.R;
     if (method_ == Curve_intersection_method::resolvent && D == 3 && B[0].degree() <= 3 && max_degree(B) <= 3 &&
         max_degree(B) == 3) {
       const auto r = goldman_rational_cubic_resolvent(B[1], B[2], B[D == 3 ? 3 : 1], B[0]);
@@ -284,6 +299,302 @@ class Curve_intersection_engine {
                CGAL::ipower(A[0], 2 - a - b - c);
         }
     return r;
+  }
+
+  bool plain_method() const {
+    return method_ == Curve_intersection_method::default_method || method_ == Curve_intersection_method::subresultant;
+  }
+
+  // ---------------------------------------------------------------- fast certified path (default method)
+  // du-1989 eq. 4.1 kept as a matrix. For a plane curve B = (X, Y, W)(t) of degree n >= 2 the Bezout matrix
+  // Bez(x, y) = Bez_t(X - x W, Y - y W) (n x n, entries affine in x, y) satisfies Bez(x,y) v(t) = 0 whenever
+  // B(t) = (x, y), v(t) = (1, t, .., t^(n-1)) (symmetric Cayley form). Evaluated on curve A, the entries of
+  // M(s) = W_A(s) Bez(X_A/W_A, Y_A/W_A) are integer polynomials of degree deg A, and R(s) = det M(s) vanishes at every
+  // s whose point lies on the algebraic curve of B: the parameters s of all intersections are roots of R in [0,1].
+  // Where rank M(s_i) = n - 1 (certified by a nonzero cofactor M_00(s_i)) the kernel is spanned by v(t*) for the
+  // unique common parameter t* (finite because M_00 != 0), and the adjugate's first column gives
+  // t* = -M_01(s_i)/M_00(s_i) (du-1989 eq. 4.3, Cramer's rule). t* is located exactly among the roots in [0,1] of
+  // T(t) (the same construction with the roles exchanged) by the sign decisions of pair_roots. In space the curves
+  // are projected on a coordinate plane first and the remaining coordinate is checked exactly at (s_i, t*).
+  // Returns false (and the caller runs the subresultant path) when a cofactor vanishes at a root (several partners,
+  // a node of the projected curve), when R or T vanish identically (a common component), or for two lines.
+  using Matrix1 = std::vector<std::vector<P1>>;
+
+  // Form of the plane projection (W, a.X, b.X) of a curve (a, b: integer rows of length D).
+  static std::array<P1, 3> projected(const Form& H, const std::array<int, 3>& a, const std::array<int, 3>& b) {
+    std::array<P1, 3> r{H[0], P1(0), P1(0)};
+    for (int k = 0; k < D; ++k) {
+      if (a[k] != 0) r[1] += H[k + 1] * P1(a[k]);
+      if (b[k] != 0) r[2] += H[k + 1] * P1(b[k]);
+    }
+    return r;
+  }
+
+  static int degree3(const std::array<P1, 3>& f) {
+    int n = 0;
+    for (const P1& q : f)
+      if (!CGAL::is_zero(q)) n = std::max(n, q.degree());
+    return n;
+  }
+
+  static Integer coefficient_xy(const P2& f, int i, int j) {  // coefficient of x^i y^j
+    if (CGAL::is_zero(f) || j > f.degree()) return Integer(0);
+    const P1& g = f[j];
+    return (CGAL::is_zero(g) || i > g.degree()) ? Integer(0) : g[i];
+  }
+
+  // M(s) = W_A(s) Bez_B(X_A/W_A, Y_A/W_A).
+  static Matrix1 implicit_matrix_on(const std::array<P1, 3>& B, const std::array<P1, 3>& A) {
+    const auto C = rational_curve_bezout_matrix(B[1], B[2], B[0]);
+    Matrix1 M(C.size(), std::vector<P1>(C.size()));
+    for (std::size_t p = 0; p < C.size(); ++p)
+      for (std::size_t q = 0; q < C.size(); ++q)
+        M[p][q] = A[0] * P1(coefficient_xy(C[p][q], 0, 0)) + A[1] * P1(coefficient_xy(C[p][q], 1, 0)) +
+                  A[2] * P1(coefficient_xy(C[p][q], 0, 1));
+    return M;
+  }
+
+  static P1 cofactor_minor(const Matrix1& M, std::size_t row, std::size_t col) {
+    Matrix1 m;
+    for (std::size_t p = 0; p < M.size(); ++p) {
+      if (p == row) continue;
+      std::vector<P1> r;
+      for (std::size_t q = 0; q < M.size(); ++q)
+        if (q != col) r.push_back(M[p][q]);
+      m.push_back(r);
+    }
+    return polynomial_matrix_determinant(m);
+  }
+
+  enum class Fast { done, undecided };
+  struct Undecided_tangency {};
+
+  // One projection; `res` receives the certified points when `done`.
+  Fast fast_projection(const std::array<int, 3>& a, const std::array<int, 3>& b, Curve_intersection_result& res) const {
+    const auto A = projected(H1_, a, b), B = projected(H2_, a, b);
+    const int nA = degree3(A), nB = degree3(B);
+    if (std::max(nA, nB) < 2) return Fast::undecided;
+    if (nA < 1 || nB < 1) return Fast::undecided;  // a projection collapsed to a point
+    CI_TICK_START;
+    const Matrix1 Ms = implicit_matrix_on(B, A);
+    P1 R = polynomial_matrix_determinant(Ms);
+    if (CGAL::is_zero(R)) return Fast::undecided;
+    R = divide_out(R, H1_[0]);  // roots outside [0,1] only (no pole in [0,1]): smaller polynomials to isolate
+    const std::vector<Isolated_root> rs = roots01(primitive(R));
+    CI_TICK("fast R");
+    if (rs.empty()) return Fast::done;  // no s in [0,1] on the (projected) curve 2: proved empty
+    const Matrix1 Mt = implicit_matrix_on(A, B);
+    P1 T = polynomial_matrix_determinant(Mt);
+    if (CGAL::is_zero(T)) return Fast::undecided;
+    T = divide_out(T, H2_[0]);
+    const std::vector<Isolated_root> rt = roots01(primitive(T));
+    CI_TICK("fast T");
+    if (rt.empty()) return Fast::done;
+
+    // Every intersection (s*, t*) in [0,1]^2 has s* among rs and t* among rt. Pairs are decided in three ways:
+    // (1) a rational parameter: its point is rational, its partners on the other curve follow by exact inversion;
+    // (2) irrational s_i, t_j: disjoint point enclosures exclude the pair, the Krawczyk test proves it (the box
+    //     I(s_i) x I(t_j) holds exactly one common point of the projections, which is then (s_i, t_j), since the
+    //     isolating intervals hold no other root of R and T; in space the remaining coordinate is then checked);
+    // (3) otherwise the cofactor inversion t* = -M_01(s_i)/M_00(s_i) decides exactly.
+    std::vector<std::pair<int, int>> pairs;  // (index in rs, index in rt)
+    std::vector<char> exact_pair;            // pair decided with rational parameters (exact tangency test)
+    std::vector<char> s_done(rs.size(), 0);
+    auto add_pair = [&](int i, int j, bool exact) {
+      for (const auto& q : pairs)
+        if (q.first == i && q.second == j) return;
+      pairs.push_back({i, j});
+      exact_pair.push_back(exact);
+    };
+    auto index_of = [](const std::vector<Isolated_root>& r, const Algebraic_real& x) {
+      for (std::size_t k = 0; k < r.size(); ++k)
+        if (r[k].root == x) return int(k);
+      throw Error("intersect_curves: internal inconsistency (an exact partner is not a root of the eliminant)");
+    };
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      if (!rs[i].root.is_rational()) continue;
+      std::vector<Algebraic_real> ts;
+      invert_point<D>(H2_, point_at<D>(H1_, rs[i].root.rational_value()), ts);
+      for (const auto& t : ts) add_pair(int(i), index_of(rt, t), true);
+      s_done[i] = 1;
+    }
+    for (std::size_t j = 0; j < rt.size(); ++j) {
+      if (!rt[j].root.is_rational()) continue;
+      std::vector<Algebraic_real> ss;
+      invert_point<D>(H1_, point_at<D>(H2_, rt[j].root.rational_value()), ss);
+      for (const auto& x : ss) add_pair(index_of(rs, x), int(j), true);
+    }
+    CI_TICK("fast exact pairs");
+    // the coordinate that the projection plane does not see (a x b has a nonzero entry there)
+    int hidden = -1;
+    if (D == 3) {
+      const int cr[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      for (int k = 2; k >= 0; --k)
+        if (cr[k] != 0) hidden = k;
+    }
+    std::vector<std::size_t> cofactor_roots;
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      if (s_done[i]) continue;
+      std::vector<int> live;
+      for (std::size_t j = 0; j < rt.size(); ++j)
+        if (!rt[j].root.is_rational()) live.push_back(int(j));
+      bool decided = false;
+      for (int bits = 24; bits <= 96 && !decided; bits *= 2) {
+        Integer p2(1);
+        mpz_mul_2exp(p2.mpz(), p2.mpz(), (unsigned long)bits);
+        const Rational w = Rational(1) / Rational(p2);
+        const mpfr_prec_t prec = mpfr_prec_t(64 + 2 * bits + coefficient_bits_);
+        rs[i].root.refine_to_width(w);
+        if (rs[i].root.is_rational()) break;  // cannot happen (rationality is decided at isolation)
+        const auto Ps = point_enclosure(H1_, rs[i].root, prec);
+        std::vector<int> next;
+        bool undecided = false;
+        for (int j : live) {
+          rt[j].root.refine_to_width(w);
+          const auto Pt = point_enclosure(H2_, rt[j].root, prec);
+          bool apart = false;
+          for (int k = 0; k < D; ++k) apart = apart || disjoint(Ps[k], Pt[k]);
+          if (apart) continue;
+          if (krawczyk_unique_intersection(A, B, rs[i].root.lower(), rs[i].root.upper(), rt[j].root.lower(),
+                                           rt[j].root.upper(), prec)) {
+            if (hidden >= 0) {  // space: the projections meet at (s_i, t_j); the hidden coordinate must agree too
+              if (disjoint(Ps[hidden], Pt[hidden])) continue;
+              undecided = true;  // exact decision needed
+              next.push_back(j);
+              continue;
+            }
+            add_pair(int(i), j, false);
+            continue;
+          }
+          undecided = true;
+          next.push_back(j);
+        }
+        live = next;
+        decided = !undecided;
+      }
+      if (!decided) cofactor_roots.push_back(i);
+    }
+    CI_TICK("fast interval pairs");
+    if (!cofactor_roots.empty()) {
+      if (nB < 2) return Fast::undecided;
+      Elimination e;
+      e.ok = true;
+      e.S11 = cofactor_minor(Ms, 0, 0);
+      e.S10 = cofactor_minor(Ms, 0, 1);
+      if (CGAL::is_zero(e.S11)) return Fast::undecided;
+      const Polynomial_1<Rational> S10q = to_rational(e.S10), S11q = to_rational(e.S11);
+      for (std::size_t i : cofactor_roots) {
+        const Algebraic_real& x = rs[i].root;
+        const int s11 = root_sign(x, e.S11);
+        if (s11 == 0) return Fast::undecided;
+        // partner y* = -S10(x)/S11(x); sign(y* - c) = -sign(S10 + c S11) sign(S11)
+        auto cmp = [&](const Rational& c) { return -root_sign(x, S10q + S11q * Polynomial_1<Rational>(c)) * s11; };
+        if (cmp(Rational(0)) < 0 || cmp(Rational(1)) > 0) continue;  // partner outside [0,1]
+        int found = -1;
+        for (std::size_t j = 0; j < rt.size() && found < 0; ++j) {
+          const Algebraic_real& y = rt[j].root;
+          if (y.is_rational() ? cmp(y.rational_value()) == 0 : (cmp(y.lower()) > 0 && cmp(y.upper()) < 0))
+            found = int(j);
+        }
+        if (found < 0)  // the partner is a root of T in [0,1]: missing it is a contradiction
+          throw Error("intersect_curves: internal inconsistency (a cofactor partner is not a root of the eliminant)");
+        if (D == 3 && !space_coordinates_agree(x, e, true, hidden)) continue;
+        res.points.push_back(make_point(rs[i], rt[found], e, e, true));
+      }
+    }
+    CI_TICK("fast cofactor pairs");
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const auto& p = pairs[k];
+      if (exact_pair[k]) {
+        try {
+          res.points.push_back(exact_point(rs[p.first], rt[p.second]));
+        } catch (const Undecided_tangency&) {
+          return Fast::undecided;
+        }
+      } else {
+        Curve_intersection_point q;  // Krawczyk: a regular zero, i.e. a transversal crossing
+        q.s = rs[p.first].root;
+        q.t = rt[p.second].root;
+        res.points.push_back(q);
+      }
+    }
+    return Fast::done;
+  }
+
+  std::array<internal::Mpfi_interval, D> point_enclosure(const Form& H, const Algebraic_real& x,
+                                                         mpfr_prec_t prec) const {
+    using I = internal::Mpfi_interval;
+    const I u = x.is_rational() ? I::hull(x.rational_value(), x.rational_value(), prec) : I::hull(x.lower(), x.upper(), prec);
+    const I w = I::horner(H[0], u);
+    std::array<I, D> r = make_array_of_intervals(prec);
+    for (int k = 0; k < D; ++k) r[k] = I::horner(H[k + 1], u) / w;
+    return r;
+  }
+  static std::array<internal::Mpfi_interval, D> make_array_of_intervals(mpfr_prec_t prec) {
+    using I = internal::Mpfi_interval;
+    if constexpr (D == 2) return {I(prec), I(prec)};
+    else return {I(prec), I(prec), I(prec)};
+  }
+
+  // Rational parameters: the multiplicity from the eliminants, tangency by exact evaluation of the tangents.
+  Curve_intersection_point exact_point(const Isolated_root& s, const Isolated_root& t) const {
+    Curve_intersection_point p;
+    p.s = s.root;
+    p.t = t.root;
+    const int m = std::min(s.multiplicity, t.multiplicity);
+    if (!s.root.is_rational() || !t.root.is_rational()) {  // one rational parameter: a rational point
+      p.tangent = m >= 2 && !tangents_apart(s.root, t.root);
+      if (p.tangent) throw Undecided_tangency();  // the caller falls back to the subresultant path
+      p.multiplicity = 1;
+      const bool end = s.root == 0 || s.root == 1 || t.root == 0 || t.root == 1;
+      p.kind = end ? Curve_intersection_kind::endpoint : Curve_intersection_kind::transversal;
+      return p;
+    }
+    const Rational a = s.root.rational_value(), b = t.root.rational_value();
+    auto ev = [](const P1& f, const Rational& x) {
+      Rational r(0);
+      for (int i = f.degree(); i >= 0; --i) r = r * x + Rational(f[i]);
+      return r;
+    };
+    std::array<Rational, D> da, db;  // tangent directions X_k' W - X_k W'
+    for (int k = 0; k < D; ++k) {
+      da[k] = ev(CGAL::differentiate(H1_[k + 1]), a) * ev(H1_[0], a) - ev(H1_[k + 1], a) * ev(CGAL::differentiate(H1_[0]), a);
+      db[k] = ev(CGAL::differentiate(H2_[k + 1]), b) * ev(H2_[0], b) - ev(H2_[k + 1], b) * ev(CGAL::differentiate(H2_[0]), b);
+    }
+    bool parallel = true;
+    for (int i = 0; i < D; ++i)
+      for (int j = i + 1; j < D; ++j) parallel = parallel && da[i] * db[j] - da[j] * db[i] == 0;
+    p.tangent = m >= 2 && parallel;
+    p.multiplicity = p.tangent ? m : 1;
+    const bool end = a == 0 || a == 1 || b == 0 || b == 1;
+    p.kind = end ? Curve_intersection_kind::endpoint
+                 : (p.tangent ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal);
+    return p;
+  }
+
+  // In space: at (x, y* = -S10(x)/S11(x)) the projections agree; the point agrees iff the hidden coordinate does:
+  // X1_k(s) W2(t) - X2_k(t) W1(s) = 0 (k = hidden), over the common denominator S11(x)^deg, decided exactly.
+  bool space_coordinates_agree(const Algebraic_real& x, const Elimination& e, bool from_s, int hidden) const {
+    const Form& A = from_s ? H1_ : H2_;  // the curve of x
+    const Form& B = from_s ? H2_ : H1_;
+    const P1 N = -e.S10;
+    const int k = hidden + 1;
+    const P2 F = lift_outer(B[0]) * P2(A[k]) - lift_outer(B[k]) * P2(A[0]);
+    return root_sign(x, substitute(F, N, e.S11)) == 0;
+  }
+
+  bool fast_path(Curve_intersection_result& res) const {
+    if (D == 2) return fast_projection({1, 0, 0}, {0, 1, 0}, res) == Fast::done;
+    // Space: coordinate planes, then a generic plane (the pairing needs a projection without a node at the points).
+    const std::array<std::array<std::array<int, 3>, 2>, 4> planes{{{{{1, 0, 0}, {0, 1, 0}}},
+                                                                    {{{1, 0, 0}, {0, 0, 1}}},
+                                                                    {{{0, 1, 0}, {0, 0, 1}}},
+                                                                    {{{1, 0, 2}, {0, 1, -3}}}}};
+    for (const auto& pl : planes) {
+      res = Curve_intersection_result();
+      if (fast_projection(pl[0], pl[1], res) == Fast::done) return true;
+    }
+    return false;
   }
 
   // ---------------------------------------------------------------- pairing
@@ -450,7 +761,7 @@ class Curve_intersection_engine {
     std::vector<std::vector<Isolated_root>> ls, lt;
     for (const auto& e : es) ls.push_back(roots01(primitive(e.R)));
     for (const auto& e : et) lt.push_back(roots01(primitive(e.R)));
-    const bool plain = method_ == Curve_intersection_method::default_method || D == 3 && method_ == Curve_intersection_method::projection;
+    const bool plain = plain_method() || (D == 3 && method_ == Curve_intersection_method::projection);
     std::vector<Isolated_root> rs, rt;
     if (plain && es.size() == 1) {
       rs = ls[0];
@@ -583,12 +894,42 @@ class Curve_intersection_engine {
     p.s = s.root;
     p.t = t.root;
     const int m = std::min(s.multiplicity, t.multiplicity);
-    p.tangent = m >= 2 && parallel_tangents(s.root, t.root, s_direction ? es : et, s_direction);
+    p.tangent = m >= 2 && !tangents_apart(s.root, t.root) && parallel_tangents(s.root, t.root, s_direction ? es : et, s_direction);
     p.multiplicity = p.tangent ? m : 1;
     auto end = [](const Algebraic_real& x) { return x.is_rational() && (x == 0 || x == 1); };
     p.kind = (end(p.s) || end(p.t)) ? Curve_intersection_kind::endpoint
                                     : (p.tangent ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal);
     return p;
+  }
+
+  // Interval proof that the tangent directions at (s, t) are not parallel (some 2x2 minor of [D1(s); D2(t)] has an
+  // enclosure without 0), refining s and t; false = not proved (then parallel_tangents decides exactly).
+  bool tangents_apart(const Algebraic_real& s, const Algebraic_real& t) const {
+    using I = internal::Mpfi_interval;
+    for (int bits = 24; bits <= 96; bits *= 2) {
+      Integer p2(1);
+      mpz_mul_2exp(p2.mpz(), p2.mpz(), (unsigned long)bits);
+      const Rational w = Rational(1) / Rational(p2);
+      const mpfr_prec_t prec = mpfr_prec_t(64 + 2 * bits + coefficient_bits_);
+      auto box = [&](const Algebraic_real& x) {
+        if (x.is_rational()) return I::hull(x.rational_value(), x.rational_value(), prec);
+        x.refine_to_width(w);
+        return x.is_rational() ? I::hull(x.rational_value(), x.rational_value(), prec) : I::hull(x.lower(), x.upper(), prec);
+      };
+      const I us = box(s), ut = box(t);
+      auto tangent = [&](const Form& H, const I& u) {
+        std::array<I, D> d = make_array_of_intervals(prec);
+        const I w0 = I::horner(H[0], u), dw0 = I::horner(CGAL::differentiate(H[0]), u);
+        for (int k = 0; k < D; ++k)
+          d[k] = I::horner(CGAL::differentiate(H[k + 1]), u) * w0 - I::horner(H[k + 1], u) * dw0;
+        return d;
+      };
+      const auto da = tangent(H1_, us), db = tangent(H2_, ut);
+      for (int i = 0; i < D; ++i)
+        for (int j = i + 1; j < D; ++j)
+          if (!(da[i] * db[j] - da[j] * db[i]).contains_zero()) return true;
+    }
+    return false;
   }
 
   // Tangent vectors D(u) = X_k' W - X_k W' are parallel iff all 2x2 minors of [D1(s); D2(t)] vanish; t is the
@@ -727,6 +1068,7 @@ class Curve_intersection_engine {
   const Curve& c2_;
   Curve_intersection_method method_;
   Form H1_, H2_;
+  long coefficient_bits_ = 0;
 };
 
 } // namespace internal
@@ -767,6 +1109,7 @@ struct Intersect_curves {
 /// Parses "default", "projection", "resolvent"; "groebner" is not implemented (Invalid_input).
 inline Curve_intersection_method curve_intersection_method_from_string(const std::string& s) {
   if (s == "default") return Curve_intersection_method::default_method;
+  if (s == "subresultant") return Curve_intersection_method::subresultant;
   if (s == "projection") return Curve_intersection_method::projection;
   if (s == "resolvent") return Curve_intersection_method::resolvent;
   if (s == "groebner") throw Invalid_input("the groebner curve intersection method is not implemented");

@@ -74,14 +74,39 @@ inline void make_roots(const Polynomial_1<Integer>& g, const std::shared_ptr<con
     if (h.empty()) h = c;
     divide_by_linear_factor(h, iv.lo);
   }
-  for (const Rational_isolating_interval& iv : ivs) {
+  std::vector<Algebraic_real> xs;
+  for (const Rational_isolating_interval& iv : ivs)
+    xs.push_back(iv.exact ? Algebraic_real(iv.lo) : Algebraic_real_access::from_interval(g, cp, iv.lo, iv.hi, iv.sign_lo));
+  if (h.empty()) h = c;
+  no_rational = h.size() < 3 ? h.size() < 2 : has_no_rational_root_modular(h);
+  tested = true;
+  if (!no_rational) {
+    // Rational roots with small denominators first (cheap: a short refinement and one exact sign), so that the
+    // modular test usually proves the remaining roots irrational without refining them to 1/lc^2.
+    for (Algebraic_real& x : xs) {
+      if (x.is_rational()) continue;
+      Algebraic_real_access::try_small_rational(x, 32);
+      if (x.is_rational()) {
+        divide_by_linear_factor(h, x.rational_value());
+        ++found;
+      }
+    }
+    if (found > 0) no_rational = h.size() < 3 ? h.size() < 2 : has_no_rational_root_modular(h);
+    next_test = 2 * found + 1;
+    found = 0;
+  }
+  for (std::size_t k = 0; k < ivs.size(); ++k) {
+    const Rational_isolating_interval& iv = ivs[k];
     if (iv.exact) {
-      out.push_back({Algebraic_real(iv.lo), multiplicity});
+      out.push_back({xs[k], multiplicity});
       continue;
     }
-    Algebraic_real x = Algebraic_real_access::from_interval(g, cp, iv.lo, iv.hi, iv.sign_lo);
+    Algebraic_real x = xs[k];
+    if (x.is_rational()) {
+      out.push_back({x, multiplicity});
+      continue;
+    }
     if (!tested) {
-      if (h.empty()) h = c;
       no_rational = h.size() < 3 ? h.size() < 2 : has_no_rational_root_modular(h);
       tested = true;
     }

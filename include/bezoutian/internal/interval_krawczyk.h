@@ -1,0 +1,185 @@
+// Interval arithmetic on MPFI (outward rounding) and the Krawczyk test for the intersection of two plane curves
+// in homogeneous power form: a proof that a parameter box holds exactly one common point.
+#ifndef BEZOUTIAN_INTERNAL_INTERVAL_KRAWCZYK_H
+#define BEZOUTIAN_INTERNAL_INTERVAL_KRAWCZYK_H
+
+#include <bezoutian/number_types.h>
+
+#include <CGAL/Polynomial.h>
+
+#include <mpfi.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace bezoutian {
+namespace internal {
+
+/// An MPFI interval with value semantics (every operation rounds outwards, so results enclose the exact ones).
+class Mpfi_interval {
+ public:
+  explicit Mpfi_interval(mpfr_prec_t prec) { mpfi_init2(v_, prec); }
+  Mpfi_interval(const Mpfi_interval& o) {
+    mpfi_init2(v_, mpfi_get_prec(o.v_));
+    mpfi_set(v_, o.v_);
+  }
+  Mpfi_interval& operator=(const Mpfi_interval& o) {
+    if (this != &o) {
+      mpfi_set_prec(v_, mpfi_get_prec(o.v_));
+      mpfi_set(v_, o.v_);
+    }
+    return *this;
+  }
+  ~Mpfi_interval() { mpfi_clear(v_); }
+
+  static Mpfi_interval hull(const Rational& lo, const Rational& hi, mpfr_prec_t prec) {
+    Mpfi_interval r(prec);
+    mpfi_interv_q(r.v_, lo.mpq(), hi.mpq());
+    return r;
+  }
+  static Mpfi_interval point(double d, mpfr_prec_t prec) {
+    Mpfi_interval r(prec);
+    mpfi_set_d(r.v_, d);
+    return r;
+  }
+  /// The midpoint (a floating-point number inside the interval) as a point interval.
+  Mpfi_interval midpoint() const {
+    Mpfi_interval r(prec());
+    mpfr_t m;
+    mpfr_init2(m, prec());
+    mpfi_mid(m, v_);
+    mpfi_set_fr(r.v_, m);
+    mpfr_clear(m);
+    return r;
+  }
+  double mid_double() const {
+    mpfr_t m;
+    mpfr_init2(m, prec());
+    mpfi_mid(m, v_);
+    const double d = mpfr_get_d(m, MPFR_RNDN);
+    mpfr_clear(m);
+    return d;
+  }
+  bool contains_zero() const { return mpfi_has_zero(v_) > 0; }
+  bool positive() const { return mpfi_is_strictly_pos(v_) > 0; }
+  /// True iff the interval lies inside the open interval (lo, hi) (exact comparisons).
+  bool inside_open(const Rational& lo, const Rational& hi) const {
+    mpfr_t e;
+    mpfr_init2(e, prec());
+    mpfi_get_left(e, v_);
+    const bool l = mpfr_cmp_q(e, lo.mpq()) > 0;
+    mpfi_get_right(e, v_);
+    const bool h = mpfr_cmp_q(e, hi.mpq()) < 0;
+    mpfr_clear(e);
+    return l && h;
+  }
+  /// True iff the two intervals are disjoint.
+  friend bool disjoint(const Mpfi_interval& a, const Mpfi_interval& b) {
+    mpfr_t x, y;
+    mpfr_init2(x, a.prec());
+    mpfr_init2(y, b.prec());
+    mpfi_get_right(x, a.v_);
+    mpfi_get_left(y, b.v_);
+    bool d = mpfr_cmp(x, y) < 0;
+    mpfi_get_left(x, a.v_);
+    mpfi_get_right(y, b.v_);
+    d = d || mpfr_cmp(y, x) < 0;
+    mpfr_clear(x);
+    mpfr_clear(y);
+    return d;
+  }
+  mpfr_prec_t prec() const { return mpfi_get_prec(v_); }
+
+  friend Mpfi_interval operator+(const Mpfi_interval& a, const Mpfi_interval& b) {
+    Mpfi_interval r(std::max(a.prec(), b.prec()));
+    mpfi_add(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Mpfi_interval operator-(const Mpfi_interval& a, const Mpfi_interval& b) {
+    Mpfi_interval r(std::max(a.prec(), b.prec()));
+    mpfi_sub(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Mpfi_interval operator*(const Mpfi_interval& a, const Mpfi_interval& b) {
+    Mpfi_interval r(std::max(a.prec(), b.prec()));
+    mpfi_mul(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Mpfi_interval operator/(const Mpfi_interval& a, const Mpfi_interval& b) {
+    Mpfi_interval r(std::max(a.prec(), b.prec()));
+    mpfi_div(r.v_, a.v_, b.v_);
+    return r;
+  }
+  friend Mpfi_interval operator*(double d, const Mpfi_interval& a) { return point(d, a.prec()) * a; }
+
+  /// f(x) by Horner's rule (an enclosure of the range of f on x).
+  static Mpfi_interval horner(const Polynomial_1<Integer>& f, const Mpfi_interval& x) {
+    Mpfi_interval r(x.prec());
+    if (CGAL::is_zero(f)) return r = point(0, x.prec());
+    mpfi_set_z(r.v_, f[f.degree()].mpz());
+    for (int i = f.degree() - 1; i >= 0; --i) {
+      mpfi_mul(r.v_, r.v_, x.v_);
+      mpfi_add_z(r.v_, r.v_, f[i].mpz());
+    }
+    return r;
+  }
+
+ private:
+  mpfi_t v_;
+};
+
+/// Values and derivatives of a homogeneous plane form (W, X, Y)(u) on an interval.
+struct Form_enclosure {
+  std::array<Mpfi_interval, 3> f, df;
+  Form_enclosure(const std::array<Polynomial_1<Integer>, 3>& F, const Mpfi_interval& u)
+      : f{Mpfi_interval::horner(F[0], u), Mpfi_interval::horner(F[1], u), Mpfi_interval::horner(F[2], u)},
+        df{Mpfi_interval::horner(CGAL::differentiate(F[0]), u), Mpfi_interval::horner(CGAL::differentiate(F[1]), u),
+           Mpfi_interval::horner(CGAL::differentiate(F[2]), u)} {}
+};
+
+/// Krawczyk's test (Krawczyk 1969; Moore 1977) for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2, the
+/// intersection of the plane curves A = (A_0 : A_1 : A_2)(s) and B(t) in homogeneous power form. With X the box
+/// (s_lo, s_hi) x (t_lo, t_hi), c a point of X and Y any 2x2 matrix,
+///   K(X) = c - Y G(c) + (I - Y G'(X)) (X - c);
+/// K(X) inside the open box proves that X holds exactly one zero of G (and that G' is regular on X: the zero is
+/// a transversal intersection). Returns true only with that proof; false means "not proved".
+inline bool krawczyk_unique_intersection(const std::array<Polynomial_1<Integer>, 3>& A,
+                                         const std::array<Polynomial_1<Integer>, 3>& B, const Rational& s_lo,
+                                         const Rational& s_hi, const Rational& t_lo, const Rational& t_hi,
+                                         mpfr_prec_t prec) {
+  using I = Mpfi_interval;
+  const I Xs = I::hull(s_lo, s_hi, prec), Xt = I::hull(t_lo, t_hi, prec);
+  const I cs = Xs.midpoint(), ct = Xt.midpoint();
+  const Form_enclosure a(A, Xs), b(B, Xt), ac(A, cs), bc(B, ct);
+  I J[2][2] = {{I(prec), I(prec)}, {I(prec), I(prec)}};
+  I G[2] = {I(prec), I(prec)};
+  for (int k = 1; k <= 2; ++k) {
+    J[k - 1][0] = a.df[k] * b.f[0] - b.f[k] * a.df[0];
+    J[k - 1][1] = a.f[k] * b.df[0] - b.df[k] * a.f[0];
+    G[k - 1] = ac.f[k] * bc.f[0] - bc.f[k] * ac.f[0];
+  }
+  const double m00 = J[0][0].mid_double(), m01 = J[0][1].mid_double(), m10 = J[1][0].mid_double(),
+               m11 = J[1][1].mid_double();
+  const double det = m00 * m11 - m01 * m10;
+  if (!(std::isfinite(det)) || det == 0) return false;
+  const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
+  if (!std::isfinite(Y[0][0]) || !std::isfinite(Y[0][1]) || !std::isfinite(Y[1][0]) || !std::isfinite(Y[1][1]))
+    return false;
+  const I ds = Xs - cs, dt = Xt - ct;
+  const I one = I::point(1, prec), zero = I::point(0, prec);
+  I K[2] = {I(prec), I(prec)};
+  const I c[2] = {cs, ct};
+  for (int i = 0; i < 2; ++i) {
+    const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
+    const I m0 = (i == 0 ? one : zero) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
+    const I m1 = (i == 1 ? one : zero) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
+    K[i] = c[i] - yg + m0 * ds + m1 * dt;
+  }
+  return K[0].inside_open(s_lo, s_hi) && K[1].inside_open(t_lo, t_hi);
+}
+
+} // namespace internal
+} // namespace bezoutian
+
+#endif
