@@ -11,9 +11,14 @@ using namespace bezoutian;
 using Curve2 = Rational_bezier_curve_2<>;
 using Curve3 = Rational_bezier_curve_3<>;
 
+#ifndef BEZOUTIAN_GENERATED_REPETITIONS
+#define BEZOUTIAN_GENERATED_REPETITIONS 5
+#endif
+
 namespace {
 
 const Curve_intersection_method all_methods[] = {Curve_intersection_method::default_method,
+                                                  Curve_intersection_method::subresultant,
                                                   Curve_intersection_method::projection,
                                                   Curve_intersection_method::resolvent};
 
@@ -118,6 +123,71 @@ TEST_CASE("generated space problems (du-1989 §4.2 protocol, degrees 3-2..3-6)",
       for (int rat = 0; rat <= 1; ++rat)
         for (int rep = 0; rep < 2; ++rep, ++problems) run_generated<3>(3, n2, k, rat == 1, seed++);
   CHECK(problems >= 90);
+}
+
+// du-1989 §4.2 at scale: every combination of dimension, degrees 2..6 on both sides, 0..4 constructed
+// intersections (as many as the generator allows), rational and polynomial, with fresh seeds. Each problem: every
+// constructed intersection found exactly; every other reported point is a common root of CGAL's own resultants
+// Res_t(F1,F2), Res_s(F1,F2) (computed once per problem) whose points agree to 1e-9; every 16th problem is also
+// solved by the subresultant strategy, which must return the same exact answer.
+template <int D>
+void run_generated_at_scale(int n1, int n2, int k, bool rational, unsigned long seed, bool compare) {
+  Curve_problem_parameters par;
+  par.degree_1 = n1;
+  par.degree_2 = n2;
+  par.intersections = k;
+  par.rational = rational;
+  par.seed = seed;
+  par.range = 16;
+  const Curve_problem<D> pb = generate_curve_problem<D>(par);
+  INFO("D=" << D << " n1=" << n1 << " n2=" << n2 << " k=" << k << " rational=" << rational << " seed=" << seed);
+  const Curve_intersection_result r = intersect_curves(pb.curve_1, pb.curve_2);
+  CHECK(r.overlaps.empty());
+  std::size_t known_found = 0;
+  std::vector<const Curve_intersection_point*> extra;
+  for (const auto& p : r.points) {
+    bool known = false;
+    for (const auto& st : pb.known) known = known || (p.s == st.first && p.t == st.second);
+    if (known)
+      ++known_found;
+    else
+      extra.push_back(&p);
+  }
+  CHECK(known_found == pb.known.size());
+  if (!extra.empty()) {
+    const auto H1 = internal::integer_power_form(pb.curve_1), H2 = internal::integer_power_form(pb.curve_2);
+    const auto F1 = internal::cross_term(H1[1], H2[0], H2[1], H1[0]), F2 = internal::cross_term(H1[2], H2[0], H2[2], H1[0]);
+    const auto R = CGAL::resultant(F1, F2);
+    const auto T = CGAL::resultant(internal::swap_variables(F1), internal::swap_variables(F2));
+    for (const auto* p : extra) {
+      if (!CGAL::is_zero(R)) CHECK(p->s.sign_of(R) == 0);
+      if (!CGAL::is_zero(T)) CHECK(p->t.sign_of(T) == 0);
+      p->s.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+      p->t.refine_to_width(Rational(1, 1000000) * Rational(1, 1000000) * Rational(1, 1000000));
+      const auto x = pb.curve_1.evaluate(CGAL::to_double(p->s.lower()));
+      const auto y = pb.curve_2.evaluate(CGAL::to_double(p->t.lower()));
+      for (int c = 0; c < D; ++c) CHECK(std::abs(x[c] - y[c]) < 1e-9 * (1 + std::abs(x[c])));
+    }
+  }
+  if (compare) require_same<D>(r, intersect_curves(pb.curve_1, pb.curve_2, Curve_intersection_method::subresultant));
+}
+
+TEST_CASE("thousands of generated problems, 2D and 3D, degrees 2-6, rational and polynomial",
+          "[curve_intersection][generated][scale]") {
+  int problems = 0;
+  unsigned long seed = 50000;
+  for (int rep = 0; rep < BEZOUTIAN_GENERATED_REPETITIONS; ++rep)
+    for (int n1 = 2; n1 <= 6; ++n1)
+      for (int n2 = 2; n2 <= 6; ++n2)
+        for (int k = 0; k <= std::min(4, std::min(n1, n2) + 1); ++k)
+          for (int rat = 0; rat <= 1; ++rat) {
+            run_generated_at_scale<2>(n1, n2, k, rat == 1, seed, problems % 16 == 0);
+            ++problems;
+            run_generated_at_scale<3>(n1, n2, k, rat == 1, seed + 1, problems % 16 == 1);
+            ++problems;
+            seed += 2;
+          }
+  CHECK(problems == 464 * BEZOUTIAN_GENERATED_REPETITIONS);  // 2320 problems by default
 }
 
 TEST_CASE("tangencies of multiplicity 2 and 3", "[curve_intersection]") {
