@@ -1,0 +1,733 @@
+// Certified intersection of a rational Bezier space curve (or a segment) with a rational tensor-product Bezier
+// patch: du-1989 Problems 2.2a / 2.2b, solved with the generalized Bezoutian of buse-elkadi-galligo-2008
+// Definition 1. See doc/curve_surface_intersection.md for the method and the proofs.
+#ifndef BEZOUTIAN_CURVE_SURFACE_INTERSECTION_H
+#define BEZOUTIAN_CURVE_SURFACE_INTERSECTION_H
+
+#include <bezoutian/Algebraic_real.h>
+#include <bezoutian/Bezoutian.h>
+#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/Polynomial_matrix_determinant.h>
+#include <bezoutian/Rational_bezier_curve.h>
+#include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/Root_isolation.h>
+#include <bezoutian/Weight_validity.h>
+#include <bezoutian/number_types.h>
+
+#include <CGAL/Polynomial.h>
+#include <CGAL/Polynomial_traits_d.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifdef CS_DEBUG
+#include <chrono>
+#include <iostream>
+#define CS_TICK(name)                                                                                       \
+  do {                                                                                                      \
+    static auto cs_t0 = std::chrono::steady_clock::now();                                                   \
+    auto cs_t1 = std::chrono::steady_clock::now();                                                          \
+    std::cerr << name << " " << std::chrono::duration<double, std::milli>(cs_t1 - cs_last()).count() << " ms\n"; \
+    cs_last() = cs_t1;                                                                                      \
+    (void)cs_t0;                                                                                            \
+  } while (0)
+inline std::chrono::steady_clock::time_point& cs_last() {
+  static std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+  return t;
+}
+#else
+#define CS_TICK(name)
+#endif
+
+namespace bezoutian {
+
+/// Kind of an isolated curve/patch intersection.
+enum class Curve_patch_intersection_kind {
+  transversal,  ///< simple root of the eliminant R(r): the curve crosses the surface
+  tangent,      ///< multiple root of R(r) with a single preimage (u,v): the curve touches the surface
+  endpoint,     ///< r = 0 or r = 1
+  boundary      ///< r inside (0,1), (u,v) on the boundary of [0,1]^2
+};
+
+inline const char* to_string(Curve_patch_intersection_kind k) {
+  switch (k) {
+    case Curve_patch_intersection_kind::transversal: return "transversal";
+    case Curve_patch_intersection_kind::tangent: return "tangent";
+    case Curve_patch_intersection_kind::endpoint: return "endpoint";
+    default: return "boundary";
+  }
+}
+
+/// One isolated intersection C(r) = Phi(u,v) with r, u, v in [0,1], all three exact algebraic numbers.
+struct Curve_patch_intersection_point {
+  Algebraic_real r, u, v;
+  /// Multiplicity of r as a root of the eliminant R(r) = det M(C(r)) (the intersection multiplicity of the
+  /// curve with the implicit surface when the patch parametrizes it once); 0 for touching points found while
+  /// the curve lies on the implicit surface (no eliminant).
+  int multiplicity = 1;
+  Curve_patch_intersection_kind kind = Curve_patch_intersection_kind::transversal;
+  /// multiplicity >= 2: the curve is tangent to the surface (or the point is singular on it).
+  bool tangent = false;
+  /// Floating-point approximation of the common point (C evaluated at the double nearest to r).
+  std::array<double, 3> point{};
+};
+
+/// A piece C([r0, r1]) of the curve contained in the patch Phi([0,1]^2) (r0 < r1, exact ends).
+struct Curve_patch_overlap {
+  Algebraic_real r0, r1;
+};
+
+/// Result of intersect_curve_patch.
+struct Curve_patch_intersection_result {
+  std::vector<Curve_patch_intersection_point> points;  ///< sorted by r, then u, then v
+  std::vector<Curve_patch_overlap> overlaps;            ///< sorted, disjoint
+};
+
+namespace internal {
+namespace cs {
+
+using Z1 = Polynomial_1<Integer>;
+using Z2 = Polynomial_2<Integer>;
+using Q1 = Polynomial_1<Rational>;
+using Qmatrix = std::vector<std::vector<Rational>>;
+
+inline Integer lcm_of_denominators(const Q1& f, Integer l) {
+  for (int i = 0; i <= f.degree(); ++i) l = CGAL::div(l * f[i].denominator(), CGAL::gcd(l, f[i].denominator()));
+  return l;
+}
+
+inline Z1 scaled_integer(const Q1& f, const Integer& l) {
+  std::vector<Integer> c;
+  for (int i = 0; i <= f.degree(); ++i) c.push_back((f[i] * Rational(l)).numerator());
+  return Z1(c.begin(), c.end());
+}
+
+inline Q1 to_q(const Z1& f) {
+  std::vector<Rational> c;
+  for (int i = 0; i <= f.degree(); ++i) c.push_back(Rational(f[i]));
+  return Q1(c.begin(), c.end());
+}
+
+/// (W, X, Y, Z) of the curve times one positive integer: integer coefficients, same projective curve.
+inline std::array<Z1, 4> integer_curve_form(const Rational_bezier_curve<Rational, 3>& c) {
+  const auto p = c.power_form();
+  Integer l(1);
+  for (const Q1& q : p) l = lcm_of_denominators(q, l);
+  std::array<Z1, 4> r;
+  for (int k = 0; k < 4; ++k) r[k] = scaled_integer(p[k], l);
+  return r;
+}
+
+/// (Phi_0..Phi_3) of the patch as sparse integer polynomials in (u, v) (one common positive factor).
+inline std::array<Sparse_polynomial<Integer>, 4> integer_patch_form(const Rational_bezier_patch<Rational>& patch) {
+  const auto p = patch.power_form();
+  Integer l(1);
+  for (const auto& q : p)
+    for (int j = 0; j <= q.degree(); ++j) l = lcm_of_denominators(q[j], l);
+  std::array<Sparse_polynomial<Integer>, 4> r;
+  for (int k = 0; k < 4; ++k) {
+    r[k] = Sparse_polynomial<Integer>(2);
+    for (int j = 0; j <= p[k].degree(); ++j)
+      for (int i = 0; i <= p[k][j].degree(); ++i)
+        r[k].add_term({i, j}, (p[k][j][i] * Rational(l)).numerator());
+  }
+  return r;
+}
+
+/// The implicit matrix of a patch of bi-degree (m,n): M(w,x1,x2,x3) = w B[0] + x1 B[1] + x2 B[2] + x3 B[3],
+/// N x N with N = 2mn, integer matrices B[k].
+///
+/// It is the generalized Bezoutian (buse-elkadi-galligo-2008 Definition 1, formula (2)) of the three polynomials
+/// f_k = x_k Phi_0(u,v) - w Phi_k(u,v) in (u, v), divided by w^2: formula (2) is multilinear in the rows f_k, and
+/// the terms with two rows Phi_0 vanish, so Bez(f_1,f_2,f_3) = w^2 (-w Bez(Phi_1,Phi_2,Phi_3) + x_1 Bez(Phi_0,Phi_2,
+/// Phi_3) + x_2 Bez(Phi_1,Phi_0,Phi_3) + x_3 Bez(Phi_1,Phi_2,Phi_0)). For three polynomials of bi-degree (m,n) it
+/// is Dixon's 2mn x 2mn matrix, whose determinant is their resultant on P^1 x P^1 (Dixon 1908; du-1989 ch. 3 for
+/// the bivariate theory). Rows are indexed by the y-monomials u^a v^b (a < 2m, b < n), columns by the
+/// x-monomials u^a v^b (a < m, b < 2n); row 0 and column 0 are the monomial 1, row 1 is u, column 1 is v.
+/// If (u0, v0) is a common root, the column vector of x-monomials at (u0,v0) is in the right kernel (the first
+/// column of formula (2) vanishes) and the row vector of y-monomials is in the left kernel (f(x) = f(y) +
+/// sum (x_i - y_i) d_i f, so the first column becomes a combination of the others).
+struct Patch_implicit_matrix {
+  std::size_t N = 0;
+  std::array<std::vector<std::vector<Integer>>, 4> B;
+
+  explicit Patch_implicit_matrix(const Rational_bezier_patch<Rational>& patch) {
+    // the actual bi-degree of the power form (a degree-elevated patch would have a zero Dixon determinant)
+    const auto phi = integer_patch_form(patch);
+    int m = 0, n = 0;
+    for (const auto& f : phi) {
+      m = std::max(m, f.degree(0));
+      n = std::max(n, f.degree(1));
+    }
+    if (m < 1 || n < 1)
+      throw Invalid_input("intersect_curve_patch: the patch does not depend on both parameters (it is not a surface)");
+    N = std::size_t(2 * m * n);
+    std::map<std::pair<int, int>, std::size_t> rows, cols;
+    auto order = [](int A, int Bd, bool u_second, std::map<std::pair<int, int>, std::size_t>& idx) {
+      std::vector<std::pair<int, int>> list{{0, 0}, u_second ? std::make_pair(1, 0) : std::make_pair(0, 1)};
+      for (int b = 0; b < Bd; ++b)
+        for (int a = 0; a < A; ++a)
+          if (std::make_pair(a, b) != list[0] && std::make_pair(a, b) != list[1]) list.push_back({a, b});
+      for (std::size_t i = 0; i < list.size(); ++i) idx[list[i]] = i;
+    };
+    order(2 * m, n, true, rows);
+    order(m, 2 * n, false, cols);
+    const int perm[4][3] = {{1, 2, 3}, {0, 2, 3}, {1, 0, 3}, {1, 2, 0}};
+    for (int k = 0; k < 4; ++k) {
+      B[k].assign(N, std::vector<Integer>(N, Integer(0)));
+      const Sparse_polynomial<Integer> bez =
+          generalized_bezoutian(std::vector<Sparse_polynomial<Integer>>{phi[perm[k][0]], phi[perm[k][1]], phi[perm[k][2]]});
+      for (const auto& t : bez.terms()) {
+        auto c = cols.find({t.first[0], t.first[1]});
+        auto r = rows.find({t.first[2], t.first[3]});
+        if (c == cols.end() || r == rows.end())
+          throw Error("curve/patch intersection: unexpected monomial in the Bezoutian (internal error)");
+        B[k][r->second][c->second] = k == 0 ? Integer(-t.second) : t.second;
+      }
+    }
+  }
+
+  /// M(H(r)) for a homogeneous curve form H = (W, X, Y, Z): entries of degree deg H.
+  std::vector<std::vector<Z1>> at_curve(const std::array<Z1, 4>& H) const {
+    std::vector<std::vector<Z1>> M(N, std::vector<Z1>(N, Z1(0)));
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j)
+        for (int k = 0; k < 4; ++k)
+          if (!CGAL::is_zero(B[k][i][j])) M[i][j] += H[k] * Z1(B[k][i][j]);
+    return M;
+  }
+
+  /// M(w, x1, x2, x3) at a rational point.
+  Qmatrix at_point(const std::array<Rational, 4>& h) const {
+    Qmatrix M(N, std::vector<Rational>(N, Rational(0)));
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j)
+        for (int k = 0; k < 4; ++k)
+          if (!CGAL::is_zero(B[k][i][j])) M[i][j] += h[k] * Rational(B[k][i][j]);
+    return M;
+  }
+};
+
+/// A basis of the right kernel {x : A x = 0} of a rational matrix (reduced row echelon form).
+inline std::vector<std::vector<Rational>> right_kernel(Qmatrix a) {
+  const std::size_t nr = a.size(), nc = nr == 0 ? 0 : a[0].size();
+  std::vector<std::size_t> pivots;
+  std::size_t r = 0;
+  for (std::size_t c = 0; c < nc && r < nr; ++c) {
+    std::size_t p = r;
+    while (p < nr && CGAL::is_zero(a[p][c])) ++p;
+    if (p == nr) continue;
+    std::swap(a[p], a[r]);
+    const Rational inv = Rational(1) / a[r][c];
+    for (std::size_t j = c; j < nc; ++j) a[r][j] *= inv;
+    for (std::size_t i = 0; i < nr; ++i) {
+      if (i == r || CGAL::is_zero(a[i][c])) continue;
+      const Rational f = a[i][c];
+      for (std::size_t j = c; j < nc; ++j) a[i][j] -= f * a[r][j];
+    }
+    pivots.push_back(c);
+    ++r;
+  }
+  std::vector<std::vector<Rational>> basis;
+  std::vector<char> is_pivot(nc, 0);
+  for (std::size_t c : pivots) is_pivot[c] = 1;
+  for (std::size_t f = 0; f < nc; ++f) {
+    if (is_pivot[f]) continue;
+    std::vector<Rational> x(nc, Rational(0));
+    x[f] = Rational(1);
+    for (std::size_t i = 0; i < pivots.size(); ++i) x[pivots[i]] = -a[i][f];
+    basis.push_back(x);
+  }
+  return basis;
+}
+
+inline Qmatrix transposed(const Qmatrix& a) {
+  Qmatrix t(a.empty() ? 0 : a[0].size(), std::vector<Rational>(a.size()));
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < a[i].size(); ++j) t[j][i] = a[i][j];
+  return t;
+}
+
+/// What the kernel of M at a point of the implicit surface says about its preimages (u,v).
+struct Kernel_answer {
+  enum Status { not_on_surface, affine, at_infinity, degenerate } status = not_on_surface;
+  Rational u, v;
+};
+
+/// Kernel of the implicit matrix at a rational point: rank N (not on the surface), rank N-1 with the unique
+/// common root affine (u, v from the kernel vectors) or at infinity, or rank < N-1 (several preimages or a
+/// singular point: degenerate).
+inline Kernel_answer analyse_kernel(const Qmatrix& M) {
+  Kernel_answer a;
+  const auto right = right_kernel(M);
+  if (right.empty()) return a;
+  if (right.size() > 1) {
+    a.status = Kernel_answer::degenerate;
+    return a;
+  }
+  const auto left = right_kernel(transposed(M));
+  const auto& x = right[0];
+  const auto& y = left.at(0);
+  if (CGAL::is_zero(x[0]) || CGAL::is_zero(y[0])) {
+    a.status = Kernel_answer::at_infinity;
+    return a;
+  }
+  a.status = Kernel_answer::affine;
+  a.u = y[1] / y[0];
+  a.v = x[1] / x[0];
+  return a;
+}
+
+inline std::vector<std::vector<Z1>> delete_row_column(const std::vector<std::vector<Z1>>& M, std::size_t r,
+                                                      std::size_t c) {
+  std::vector<std::vector<Z1>> s;
+  for (std::size_t i = 0; i < M.size(); ++i) {
+    if (i == r) continue;
+    s.emplace_back();
+    for (std::size_t j = 0; j < M.size(); ++j)
+      if (j != c) s.back().push_back(M[i][j]);
+  }
+  return s;
+}
+
+inline Z1 small_polynomial_determinant(const std::vector<std::vector<Z1>>& M) {
+  if (M.empty()) return Z1(1);
+  if (M.size() == 1) return M[0][0];
+  return polynomial_matrix_determinant(M);
+}
+
+inline std::string str(const Rational& q) {
+  std::ostringstream s;
+  s << q;
+  return s.str();
+}
+
+inline bool in_unit_interval(const Rational& x) { return Rational(0) <= x && x <= Rational(1); }
+
+inline bool is_zero_or_one(const Algebraic_real& x) {
+  return x.is_rational() && (CGAL::is_zero(x.rational_value()) || x.rational_value() == Rational(1));
+}
+
+/// Sorted distinct roots in [a,b] with pairwise disjoint isolating intervals.
+inline std::vector<Isolated_root> separated_roots(const Z1& f, const Rational& a, const Rational& b) {
+  std::vector<Isolated_root> r = isolate_real_roots(f, a, b);
+  for (std::size_t i = 0; i + 1 < r.size(); ++i)
+    for (;;) {
+      const Algebraic_real &x = r[i].root, &y = r[i + 1].root;
+      if (x.upper() < y.lower() || (x.is_rational() && y.is_rational())) break;
+      if (x.is_rational() && x.rational_value() < y.lower()) break;
+      if (y.is_rational() && x.upper() < y.rational_value()) break;
+      x.refine();
+      y.refine();
+    }
+  return r;
+}
+
+/// The curve/patch engine.
+class Curve_patch_engine {
+ public:
+  using Curve = Rational_bezier_curve<Rational, 3>;
+  using Patch = Rational_bezier_patch<Rational>;
+
+  Curve_patch_engine(const Curve& c, const Patch& p) : curve_(c), patch_(p) {}
+
+  Curve_patch_intersection_result run() {
+    if (patch_.degree_u() < 1 || patch_.degree_v() < 1)
+      throw Invalid_input("intersect_curve_patch: the patch has degree 0 in u or in v (it is a curve, not a surface)");
+    check_no_pole(curve_);
+    check_no_pole(patch_);
+    Curve_patch_intersection_result res;
+    CS_TICK("start");
+    H_ = integer_curve_form(curve_);
+    if (disjoint_boxes()) return res;
+    matrix_ = std::make_shared<Patch_implicit_matrix>(patch_);
+    if (is_constant()) {
+      const auto pre = preimages(curve_(Rational(0)));
+      if (!pre.empty()) res.overlaps.push_back({Algebraic_real(0), Algebraic_real(1)});
+      return res;
+    }
+    CS_TICK("matrix");
+    M_ = matrix_->at_curve(H_);
+    // R(r) = det M(C(r)): the implicit equation of the surface along the curve (buse-elkadi-galligo-2008 §2:
+    // the determinant of the Bezoutian matrix is the resultant). Degree <= 2 m n deg C.
+    const Z1 R = small_polynomial_determinant(M_);
+    CS_TICK("det");
+    if (CGAL::is_zero(R)) {
+      check_implicit_matrix_regular();
+      on_surface_case(res);
+    } else {
+      const auto roots = separated_roots(R, Rational(0), Rational(1));
+      CS_TICK("isolate");
+      for (const Isolated_root& root : roots) resolve(root, res);
+      CS_TICK("resolve");
+    }
+    sort_points(res);
+    return res;
+  }
+
+  /// All (u,v) in [0,1]^2 with Phi(u,v) = p (rational point), from the kernel of M(1, p).
+  std::vector<std::pair<Rational, Rational>> preimages(const std::array<Rational, 3>& p) const {
+    const Kernel_answer k = analyse_kernel(matrix_->at_point({Rational(1), p[0], p[1], p[2]}));
+    if (k.status == Kernel_answer::degenerate)
+      throw Error("intersect_curve_patch: the point (" + str(p[0]) + ", " + str(p[1]) + ", " + str(p[2]) +
+                  ") has several preimages on the patch or is singular on it (not supported)");
+    std::vector<std::pair<Rational, Rational>> out;
+    if (k.status == Kernel_answer::affine && in_unit_interval(k.u) && in_unit_interval(k.v)) {
+      // the kernel argument gives the unique common root; checked by exact evaluation as well
+      if (patch_(k.u, k.v) != p) throw Error("intersect_curve_patch: kernel inversion failed (internal error)");
+      out.push_back({k.u, k.v});
+    }
+    return out;
+  }
+
+ private:
+  bool is_constant() const {
+    const Integer w0 = H_[0][0];
+    for (int k = 1; k < 4; ++k)
+      if (!CGAL::is_zero(H_[k] * Z1(w0) - H_[0] * Z1(H_[k][0]))) return false;
+    return true;
+  }
+
+  // Exact exclusion: with weights of one sign the curve (patch) lies in the box of its control points.
+  bool disjoint_boxes() const {
+    if (!curve_.encloses_curve() || !patch_.encloses_patch()) return false;
+    const auto a = curve_.control_box();
+    const auto b = patch_.control_box();
+    for (int k = 0; k < 3; ++k)
+      if (a.second[k] < b.first[k] || b.second[k] < a.first[k]) return true;
+    return false;
+  }
+
+  // det M(w,x) == 0 identically: base points or a patch whose image is not a surface.
+  void check_implicit_matrix_regular() const {
+    const int pts[3][4] = {{3, -7, 11, 5}, {-2, 13, 1, -9}, {17, 4, -6, 23}};
+    for (const auto& q : pts) {
+      const Qmatrix A = matrix_->at_point({Rational(q[0]), Rational(q[1]), Rational(q[2]), Rational(q[3])});
+      if (right_kernel(A).empty()) return;
+    }
+    throw Error("intersect_curve_patch: the implicit matrix of the patch is singular (the patch has base points or "
+                "its image is not a surface); not supported");
+  }
+
+  // ------------------------------------------------------------------ isolated intersections
+  void resolve(const Isolated_root& root, Curve_patch_intersection_result& res) {
+    const Algebraic_real& r = root.root;
+    if (r.is_rational()) {
+      const Rational q = r.rational_value();
+      const auto h = curve_.homogeneous_value(q);
+      const Kernel_answer k = analyse_kernel(matrix_->at_point({h[0], h[1], h[2], h[3]}));
+      if (k.status == Kernel_answer::degenerate)
+        throw Error("intersect_curve_patch: at r = " + str(q) +
+                    " the curve meets the surface in a point with several preimages or a singular point "
+                    "(not supported)");
+      if (k.status != Kernel_answer::affine || !in_unit_interval(k.u) || !in_unit_interval(k.v)) return;
+      if (patch_(k.u, k.v) != curve_(q)) throw Error("intersect_curve_patch: kernel inversion failed (internal error)");
+      add_point(res, r, Algebraic_real(k.u), Algebraic_real(k.v), root.multiplicity);
+      return;
+    }
+    // Irrational r: adj M(r) = x y^T when rank M = N-1, so with D11 = adj_00, Du = adj_01 (row u of y), Dv = adj_10
+    // (column v of x): D11(r) != 0 proves rank N-1 and a unique affine common root u = Du/D11, v = Dv/D11.
+    compute_minors();
+    CS_TICK("minors");
+    const int s = r.sign_of(D11_);
+    if (s == 0)
+      throw Error("intersect_curve_patch: at an irrational root r ~ " + r.to_decimal_string(12) +
+                  " the adjugate vanishes (several preimages, singular point or root at infinity: not supported)");
+    Algebraic_real u, v;
+    if (!located(r, Du_, s, 0, u) || !located(r, Dv_, s, 1, v)) return;
+    add_point(res, r, u, v, root.multiplicity);
+  }
+
+  void compute_minors() {
+    if (have_minors_) return;
+    D11_ = to_q(small_polynomial_determinant(delete_row_column(M_, 0, 0)));
+    Du_ = -to_q(small_polynomial_determinant(delete_row_column(M_, 1, 0)));
+    Dv_ = -to_q(small_polynomial_determinant(delete_row_column(M_, 0, 1)));
+    have_minors_ = true;
+  }
+
+  // x0 = A(r)/D11(r) (sign of D11(r) = s): false if x0 is outside [0,1] (proved); otherwise x0 as an exact
+  // algebraic number: a root of the eliminant E (U or V, which vanishes at every intersection parameter), located
+  // among its isolated roots in [0,1] by exact sign decisions sign(x0 - c) = sign(A - c D11)(r) * s.
+  bool located(const Algebraic_real& r, const Q1& A, int s, int direction, Algebraic_real& out) {
+    auto cmp = [&](const Rational& c) { return r.sign_of(A - D11_ * Q1(c)) * s; };
+    const int c0 = cmp(Rational(0)), c1 = cmp(Rational(1));
+    if (c0 < 0 || c1 > 0) return false;
+    if (c0 == 0) return out = Algebraic_real(0), true;
+    if (c1 == 0) return out = Algebraic_real(1), true;
+    compute_eliminants();
+    for (const Isolated_root& x : eliminant_roots_[direction]) {
+      const Algebraic_real& a0 = x.root;
+      const bool here = a0.is_rational() ? cmp(a0.rational_value()) == 0
+                                         : (cmp(a0.lower()) > 0 && cmp(a0.upper()) < 0);
+      if (here) return out = a0, true;
+    }
+    throw Error("intersect_curve_patch: parameter not located among the eliminant roots (internal error)");
+  }
+
+  // U(u) and V(v): with f_ab(x, y) = Res_r(L_a(C) - x W, L_b(C) - y W) the implicit equation of the projection of
+  // the curve by two linear forms (L_a, L_b) (homogenized: F_ab(X, Y, W)), g_ab(u,v) = F_ab(L_a(Phi), L_b(Phi),
+  // Phi_0) vanishes at every preimage (u,v) of a point of the curve; U = Res_v(g_ab, g_ac), V = Res_u(g_ab, g_ac)
+  // vanish at the parameters of every intersection. Several projections are tried until U, V are nonzero.
+  void compute_eliminants() {
+    if (have_eliminants_) return;
+    const auto Phi = dense_patch_form();
+    const int forms[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, -3}, {3, -1, 2}, {-2, 5, 1}};
+    const int triples[4][3] = {{0, 1, 2}, {1, 2, 0}, {3, 4, 5}, {4, 5, 3}};
+    for (const auto& t : triples) {
+      const Z2 g1 = projected_on_patch(forms[t[0]], forms[t[1]], Phi);
+      const Z2 g2 = projected_on_patch(forms[t[0]], forms[t[2]], Phi);
+      if (CGAL::is_zero(g1) || CGAL::is_zero(g2)) continue;
+      const Z1 U = outer_resultant(g1, g2);
+      const Z1 V = outer_resultant(swap_uv(g1), swap_uv(g2));
+      if (CGAL::is_zero(U) || CGAL::is_zero(V)) continue;
+      eliminant_roots_[0] = separated_roots(U, Rational(0), Rational(1));
+      eliminant_roots_[1] = separated_roots(V, Rational(0), Rational(1));
+      CS_TICK("eliminants U, V");
+      have_eliminants_ = true;
+      return;
+    }
+    throw Error("intersect_curve_patch: no projection gives nonzero eliminants U(u), V(v) (degenerate input)");
+  }
+
+  std::array<Z2, 4> dense_patch_form() const {
+    const auto sp = integer_patch_form(patch_);
+    std::array<Z2, 4> out;
+    for (int k = 0; k < 4; ++k) {
+      std::vector<Z1> rows(std::size_t(patch_.degree_v() + 1), Z1(0));
+      for (const auto& t : sp[k].terms()) rows[std::size_t(t.first[1])] += Z1(t.second) * CGAL::ipower(Z1(Integer(0), Integer(1)), t.first[0]);
+      out[k] = Z2(rows.begin(), rows.end());
+    }
+    return out;
+  }
+
+  static Z1 linear_form(const int* c, const std::array<Z1, 4>& H) {
+    return H[1] * Z1(c[0]) + H[2] * Z1(c[1]) + H[3] * Z1(c[2]);
+  }
+  static Z2 linear_form(const int* c, const std::array<Z2, 4>& P) {
+    return P[1] * Z2(c[0]) + P[2] * Z2(c[1]) + P[3] * Z2(c[2]);
+  }
+
+  // g(u,v) = F(L_a(Phi), L_b(Phi), Phi_0) with F the homogenized Res_r(A - x W, B - y W) (Sylvester matrix in r,
+  // entries in Z[x,y]); zero if the projection of the curve is degenerate (a point).
+  Z2 projected_on_patch(const int* la, const int* lb, const std::array<Z2, 4>& Phi) const {
+    const Z1 A = linear_form(la, H_), B = linear_form(lb, H_), W = H_[0];
+    const int d = std::max({A.degree(), B.degree(), W.degree()});
+    if (d < 1) return Z2(0);
+    auto coef = [](const Z1& f, int i) { return i <= f.degree() ? f[i] : Integer(0); };
+    // p(r) = sum (A_i - x W_i) r^i, q(r) = sum (B_i - y W_i) r^i (x inner, y outer variable)
+    std::vector<Z2> pc, qc;
+    for (int i = 0; i <= d; ++i) {
+      pc.push_back(Z2(Z1(coef(A, i), -coef(W, i))));
+      qc.push_back(Z2(Z1(coef(B, i)), Z1(-coef(W, i))));
+    }
+    if (CGAL::is_zero(pc[d]) && CGAL::is_zero(qc[d])) return Z2(0);
+    std::vector<std::vector<Z2>> S(std::size_t(2 * d), std::vector<Z2>(std::size_t(2 * d), Z2(0)));
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j <= d; ++j) {
+        S[i][i + j] = pc[d - j];
+        S[d + i][i + j] = qc[d - j];
+      }
+    const Z2 f = polynomial_matrix_determinant(S);
+    if (CGAL::is_zero(f)) return Z2(0);
+    int deg = 0;
+    for (int b = 0; b <= f.degree(); ++b)
+      if (!CGAL::is_zero(f[b])) deg = std::max(deg, b + f[b].degree());
+    const Z2 X = linear_form(la, Phi), Y = linear_form(lb, Phi);
+    std::vector<Z2> Xp{Z2(1)}, Yp{Z2(1)}, Wp{Z2(1)};
+    for (int i = 1; i <= deg; ++i) {
+      Xp.push_back(Xp.back() * X);
+      Yp.push_back(Yp.back() * Y);
+      Wp.push_back(Wp.back() * Phi[0]);
+    }
+    Z2 g(0);
+    for (int b = 0; b <= f.degree(); ++b)
+      for (int a = 0; a <= f[b].degree(); ++a)
+        if (!CGAL::is_zero(f[b][a])) g += Z2(f[b][a]) * Xp[a] * Yp[b] * Wp[deg - a - b];
+    return g;
+  }
+
+  static Z2 swap_uv(const Z2& g) { return typename CGAL::Polynomial_traits_d<Z2>::Swap()(g, 0, 1); }
+
+  // Res_v(g1, g2) by the Sylvester matrix in the outer variable (entries in Z[u]).
+  static Z1 outer_resultant(const Z2& g1, const Z2& g2) {
+    const int d1 = g1.degree(), d2 = g2.degree();
+    if (d1 < 1 || d2 < 1) return Z1(0);
+    const std::size_t n = std::size_t(d1 + d2);
+    std::vector<std::vector<Z1>> S(n, std::vector<Z1>(n, Z1(0)));
+    for (int i = 0; i < d2; ++i)
+      for (int j = 0; j <= d1; ++j) S[i][i + j] = g1[d1 - j];
+    for (int i = 0; i < d1; ++i)
+      for (int j = 0; j <= d2; ++j) S[d2 + i][i + j] = g2[d2 - j];
+    return polynomial_matrix_determinant(S);
+  }
+
+  void add_point(Curve_patch_intersection_result& res, const Algebraic_real& r, const Algebraic_real& u,
+                 const Algebraic_real& v, int multiplicity) const {
+    Curve_patch_intersection_point p;
+    p.r = r;
+    p.u = u;
+    p.v = v;
+    p.multiplicity = multiplicity;
+    p.tangent = multiplicity >= 2;
+    if (is_zero_or_one(r))
+      p.kind = Curve_patch_intersection_kind::endpoint;
+    else if (is_zero_or_one(u) || is_zero_or_one(v))
+      p.kind = Curve_patch_intersection_kind::boundary;
+    else
+      p.kind = p.tangent ? Curve_patch_intersection_kind::tangent : Curve_patch_intersection_kind::transversal;
+    p.point = curve_.evaluate(r.to_double());
+    res.points.push_back(p);
+  }
+
+  // ------------------------------------------------------------------ the curve lies on the implicit surface
+  struct Break {
+    Algebraic_real r;
+    std::vector<std::pair<Algebraic_real, Algebraic_real>> uv;  // known preimages (from the boundary curves)
+  };
+
+  // C([0,1]) is in the algebraic surface. The set {r : C(r) in Phi([0,1]^2)} can change only where C meets the
+  // image of the boundary of [0,1]^2 (where Phi is a local homeomorphism onto the surface): breakpoints are
+  // r = 0, 1 and the parameters of the curve/boundary-curve intersections (intersect_curves, exact); each piece
+  // between consecutive breakpoints is decided at a rational point by kernel inversion.
+  void on_surface_case(Curve_patch_intersection_result& res) const {
+    std::vector<Break> br{Break{Algebraic_real(0), {}}, Break{Algebraic_real(1), {}}};
+    for (int side = 0; side < 4; ++side) {
+      const Curve b = patch_.boundary_curve<Curve>(side);
+      auto uv = [side](const Algebraic_real& t) {
+        switch (side) {
+          case 0: return std::make_pair(t, Algebraic_real(0));
+          case 1: return std::make_pair(Algebraic_real(1), t);
+          case 2: return std::make_pair(t, Algebraic_real(1));
+          default: return std::make_pair(Algebraic_real(0), t);
+        }
+      };
+      const Curve_intersection_result ci = intersect_curves(curve_, b);
+      for (const auto& p : ci.points) br.push_back(Break{p.s, {uv(p.t)}});
+      for (const auto& o : ci.overlaps) {
+        br.push_back(Break{o.s0, {uv(o.t0)}});
+        br.push_back(Break{o.s1, {uv(o.t1)}});
+      }
+    }
+    std::sort(br.begin(), br.end(), [](const Break& a, const Break& b) { return a.r < b.r; });
+    std::vector<Break> ub;
+    for (const Break& b : br) {
+      if (!ub.empty() && ub.back().r == b.r) {
+        for (const auto& w : b.uv) {
+          bool dup = false;
+          for (const auto& z : ub.back().uv) dup = dup || (z.first == w.first && z.second == w.second);
+          if (!dup) ub.back().uv.push_back(w);
+        }
+      } else {
+        ub.push_back(b);
+      }
+    }
+    std::vector<char> covered(ub.size() - 1, 0);
+    for (std::size_t i = 0; i + 1 < ub.size(); ++i) covered[i] = piece_covered(ub[i].r, ub[i + 1].r);
+    for (std::size_t i = 0; i < covered.size();) {
+      if (!covered[i]) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j + 1 < covered.size() && covered[j + 1]) ++j;
+      res.overlaps.push_back({ub[i].r, ub[j + 1].r});
+      i = j + 1;
+    }
+    // Breakpoints outside every overlap that lie on the patch: isolated touching points.
+    for (std::size_t i = 0; i < ub.size(); ++i) {
+      const bool in_overlap = (i > 0 && covered[i - 1]) || (i + 1 < ub.size() && covered[i]);
+      if (in_overlap) continue;
+      std::vector<std::pair<Algebraic_real, Algebraic_real>> uv = ub[i].uv;
+      if (uv.empty() && ub[i].r.is_rational())
+        for (const auto& w : preimages(curve_(ub[i].r.rational_value())))
+          uv.push_back({Algebraic_real(w.first), Algebraic_real(w.second)});
+      for (const auto& w : uv) {
+        add_point(res, ub[i].r, w.first, w.second, 0);
+        res.points.back().tangent = false;
+      }
+    }
+  }
+
+  bool piece_covered(const Algebraic_real& a, const Algebraic_real& b) const {
+    Rational m = a.is_rational() && b.is_rational() ? (a.rational_value() + b.rational_value()) / 2
+                                                    : a.rational_between(b);
+    // a few rational points of the open piece, in case the first one is a singular point of the surface
+    for (int attempt = 0;; ++attempt) {
+      try {
+        return !preimages(curve_(m)).empty();
+      } catch (const Error&) {
+        if (attempt >= 3) throw;
+        const Algebraic_real am(m);
+        m = am.rational_between(attempt % 2 == 0 ? a : b);
+      }
+    }
+  }
+
+  static void sort_points(Curve_patch_intersection_result& res) {
+    std::sort(res.points.begin(), res.points.end(),
+              [](const Curve_patch_intersection_point& a, const Curve_patch_intersection_point& b) {
+                int c = a.r.compare(b.r);
+                if (c == 0) c = a.u.compare(b.u);
+                if (c == 0) c = a.v.compare(b.v);
+                return c < 0;
+              });
+  }
+
+  const Curve& curve_;
+  const Patch& patch_;
+  std::array<Z1, 4> H_;
+  std::shared_ptr<Patch_implicit_matrix> matrix_;
+  std::vector<std::vector<Z1>> M_;
+  bool have_minors_ = false;
+  Q1 D11_, Du_, Dv_;
+  bool have_eliminants_ = false;
+  std::array<std::vector<Isolated_root>, 2> eliminant_roots_;
+};
+
+}  // namespace cs
+}  // namespace internal
+
+/// \brief All intersections of the rational Bezier space curve C(r), r in [0,1], with the rational Bezier patch
+/// Phi(u,v), (u,v) in [0,1]^2 (du-1989 Problem 2.2b): isolated points (r; u, v) as exact algebraic numbers, and the
+/// pieces of the curve lying in the patch (overlaps).
+///
+/// Method: with M(w,x,y,z) the 2mn x 2mn implicit (Dixon / generalized Bezoutian) matrix of the patch, the roots of
+/// R(r) = det M(C(r)) in [0,1] contain every intersection parameter; at each root the kernel of M gives (u,v)
+/// exactly (rational roots: exact linear algebra; irrational roots: u = Du/D11, v = Dv/D11 from three cofactors).
+/// Requirements: no pole of the curve on [0,1] or of the patch on [0,1]^2 (Invalid_input), bi-degree >= (1,1)
+/// (Invalid_input). Error (not supported) when the curve passes through a point with several preimages in the
+/// patch parameters (a self-intersection or singular point of the surface), when the patch has base points, or
+/// when the curve lies on the surface along its singular curve. A constant curve gives the overlap [0,1] if its
+/// point is on the patch, nothing otherwise.
+inline Curve_patch_intersection_result intersect_curve_patch(const Rational_bezier_curve<Rational, 3>& curve,
+                                                              const Rational_bezier_patch<Rational>& patch) {
+  return internal::cs::Curve_patch_engine(curve, patch).run();
+}
+
+/// \brief Intersections of the segment a + r (b - a), r in [0,1], with the patch (du-1989 Problem 2.2a): the
+/// degree-1 case of intersect_curve_patch. a == b: the point case (overlap [0,1] if the point is on the patch).
+inline Curve_patch_intersection_result intersect_segment_patch(const std::array<Rational, 3>& a,
+                                                                const std::array<Rational, 3>& b,
+                                                                const Rational_bezier_patch<Rational>& patch) {
+  return intersect_curve_patch(Rational_bezier_curve<Rational, 3>(std::vector<std::array<Rational, 3>>{a, b}), patch);
+}
+
+/// Function object form (CGAL style).
+struct Intersect_curve_patch {
+  Curve_patch_intersection_result operator()(const Rational_bezier_curve<Rational, 3>& curve,
+                                             const Rational_bezier_patch<Rational>& patch) const {
+    return intersect_curve_patch(curve, patch);
+  }
+};
+
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_CURVE_SURFACE_INTERSECTION_H
