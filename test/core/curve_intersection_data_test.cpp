@@ -48,6 +48,7 @@ double dist(const Algebraic_real& a, const Rational& b) {
 }
 
 const Curve_intersection_method all_methods[] = {Curve_intersection_method::default_method,
+                                                  Curve_intersection_method::subresultant,
                                                   Curve_intersection_method::projection,
                                                   Curve_intersection_method::resolvent};
 
