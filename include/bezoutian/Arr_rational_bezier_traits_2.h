@@ -29,36 +29,77 @@
 namespace bezoutian {
 
 /// \brief A point of the arrangement: exact algebraic coordinates, plus the curves and parameters it is known
-/// to lie at (used as a fast path by the predicates; never needed for correctness).
+/// to lie at. A point of a curve at an algebraic parameter t gets its exact coordinates (defining polynomial
+/// Res_t(X - x W, p), internal/arr_bezier_exact.h) only when a comparison cannot be decided by enclosures of
+/// X/W and Y/W on t's refined isolating interval (filters, exact interval arithmetic).
 class Arr_bezier_point_2 {
  public:
   using Supporting = internal::Arr_bezier_supporting_curve;
   using Origin = std::pair<std::shared_ptr<const Supporting>, Algebraic_real>;
 
   /// The origin (0,0).
-  Arr_bezier_point_2() : rep_(std::make_shared<Rep>()) {}
+  Arr_bezier_point_2() : Arr_bezier_point_2(Rational(0), Rational(0)) {}
   /// The rational point (x, y).
   Arr_bezier_point_2(const Rational& x, const Rational& y) : rep_(std::make_shared<Rep>()) {
-    rep_->x = Algebraic_real(x);
-    rep_->y = Algebraic_real(y);
+    rep_->c[0] = Algebraic_real(x);
+    rep_->c[1] = Algebraic_real(y);
+    rep_->known[0] = rep_->known[1] = true;
   }
   /// The point with the given exact coordinates.
   Arr_bezier_point_2(const Algebraic_real& x, const Algebraic_real& y) : rep_(std::make_shared<Rep>()) {
-    rep_->x = x;
-    rep_->y = y;
+    rep_->c[0] = x;
+    rep_->c[1] = y;
+    rep_->known[0] = rep_->known[1] = true;
   }
-  /// The point of a supporting curve at parameter t (coordinates computed exactly).
+  /// The point of a supporting curve at parameter t (exact coordinates computed on demand).
   Arr_bezier_point_2(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) : rep_(std::make_shared<Rep>()) {
-    rep_->x = internal::arr_value_at(s->num[0], s->den[0], t);
-    rep_->y = internal::arr_value_at(s->num[1], s->den[1], t);
     rep_->origins.push_back({s, t});
+    if (t.is_rational())
+      for (int k = 0; k < 2; ++k) coordinate(k);
   }
 
-  const Algebraic_real& x() const { return rep_->x; }
-  const Algebraic_real& y() const { return rep_->y; }
+  /// Exact coordinate k (0: x, 1: y), computed on first use.
+  const Algebraic_real& coordinate(int k) const {
+    Rep& r = *rep_;
+    if (!r.known[k]) {
+      const Origin& o = r.origins.front();
+      r.c[k] = internal::arr_value_at(o.first->num[k], o.first->den[k], o.second);
+      r.known[k] = true;
+    }
+    return r.c[k];
+  }
+  const Algebraic_real& x() const { return coordinate(0); }
+  const Algebraic_real& y() const { return coordinate(1); }
+  bool is_rational() const {
+    return rep_->known[0] && rep_->known[1] && rep_->c[0].is_rational() && rep_->c[1].is_rational();
+  }
+
+  /// A closed rational interval containing coordinate k (from the exact number if known, else an enclosure of
+  /// the coordinate function on the parameter's isolating interval).
+  void enclose(int k, Rational& lo, Rational& hi) const {
+    Rep& r = *rep_;
+    for (;;) {
+      if (r.known[k]) {
+        lo = r.c[k].lower();
+        hi = r.c[k].upper();
+        return;
+      }
+      const Origin& o = r.origins.front();
+      if (internal::arr_enclose_quotient(o.first->num[k], o.first->den[k], o.second.lower(), o.second.upper(), lo, hi))
+        return;
+      internal::arr_refine(o.second);
+    }
+  }
+  /// Shrinks the enclosures.
+  void refine(int k) const {
+    Rep& r = *rep_;
+    if (r.known[k]) internal::arr_refine(r.c[k]);
+    else internal::arr_refine(r.origins.front().second);
+  }
+
   /// Double approximations (nearest doubles).
-  double approximate_x() const { return rep_->x.to_double(); }
-  double approximate_y() const { return rep_->y.to_double(); }
+  double approximate_x() const { return x().to_double(); }
+  double approximate_y() const { return y().to_double(); }
   const std::vector<Origin>& origins() const { return rep_->origins; }
   /// Records that the point lies on s at parameter t (the caller guarantees it).
   void add_origin(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) const {
@@ -68,13 +109,30 @@ class Arr_bezier_point_2 {
   }
   bool is_same(const Arr_bezier_point_2& o) const { return rep_ == o.rep_; }
 
+  /// Exact sign of coordinate k of p minus that of q: enclosures first, exact numbers if they do not separate.
+  friend int compare_coordinate(const Arr_bezier_point_2& p, const Arr_bezier_point_2& q, int k) {
+    if (p.rep_ == q.rep_) return 0;
+    for (int round = 0; round < 3; ++round) {
+      Rational a, b, c, d;
+      p.enclose(k, a, b);
+      q.enclose(k, c, d);
+      if (b < c) return -1;
+      if (d < a) return 1;
+      if (a == b && c == d) return CGAL::compare(a, c);
+      p.refine(k);
+      q.refine(k);
+    }
+    return p.coordinate(k).compare(q.coordinate(k));
+  }
+
   friend std::ostream& operator<<(std::ostream& os, const Arr_bezier_point_2& p) {
     return os << "(" << p.approximate_x() << ", " << p.approximate_y() << ")";
   }
 
  private:
   struct Rep {
-    Algebraic_real x, y;
+    Algebraic_real c[2];
+    bool known[2] = {false, false};
     std::vector<Origin> origins;
   };
   std::shared_ptr<Rep> rep_;
@@ -219,14 +277,11 @@ class Arr_rational_bezier_traits_2 {
   }
 
   // ------------------------------------------------------------------------------------------- basic predicates
-  static int cmp_x(const Point_2& p, const Point_2& q) {
-    if (p.is_same(q)) return 0;
-    return p.x().compare(q.x());
-  }
+  static int cmp_x(const Point_2& p, const Point_2& q) { return compare_coordinate(p, q, 0); }
   static int cmp_xy(const Point_2& p, const Point_2& q) {
     if (p.is_same(q)) return 0;
-    const int c = p.x().compare(q.x());
-    return c != 0 ? c : p.y().compare(q.y());
+    const int c = compare_coordinate(p, q, 0);
+    return c != 0 ? c : compare_coordinate(p, q, 1);
   }
   static CGAL::Comparison_result res(int c) { return c < 0 ? CGAL::SMALLER : (c > 0 ? CGAL::LARGER : CGAL::EQUAL); }
 
@@ -265,18 +320,58 @@ class Arr_rational_bezier_traits_2 {
     return r[0];
   }
 
+  /// Enclosure [lo, hi] of the ordinates of the non-vertical arc over the abscissae [xl, xh] (false if not found
+  /// near enough). Rational parameters a < b inside the arc with x(a), x(b) on both sides of [xl, xh] bracket
+  /// the parameters there (x is monotone on the arc); the bracket is proposed in doubles and checked exactly,
+  /// and y is enclosed on [a, b] by exact interval arithmetic.
+  static bool enclose_y_over(const X_monotone_curve_2& c, const Rational& xl, const Rational& xh, Rational& lo,
+                             Rational& hi) {
+    const Supporting& S = *c.supporting();
+    const double target = 0.5 * (CGAL::to_double(xl) + CGAL::to_double(xh));
+    double a = c.parameter_min().to_double(), b = c.parameter_max().to_double();
+    const bool inc = c.is_increasing();
+    for (int i = 0; i < 60 && b - a > 1e-15; ++i) {
+      const double m = 0.5 * (a + b);
+      const double xm = S.curve.evaluate(m)[0];
+      if ((xm < target) == inc) a = m;
+      else b = m;
+    }
+    const double tau = 0.5 * (a + b);
+    for (double delta = 1e-12; delta < 1e-2; delta *= 64) {
+      const Rational ra(tau - delta), rb(tau + delta);
+      if (c.parameter_min().compare(ra) >= 0 || c.parameter_max().compare(rb) <= 0) return false;
+      const Rational xa = internal::arr_eval(S.num[0], ra) / internal::arr_eval(S.den[0], ra);
+      const Rational xb = internal::arr_eval(S.num[0], rb) / internal::arr_eval(S.den[0], rb);
+      const bool bracket = inc ? (xa < xl && xb > xh) : (xa > xh && xb < xl);
+      if (!bracket) continue;
+      return internal::arr_enclose_quotient(S.num[1], S.den[1], ra, rb, lo, hi);
+    }
+    return false;
+  }
+
+  /// Filter for compare_y_at_x (0: undecided).
+  static int filtered_compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
+    Rational xl, xh, yl, yh, lo, hi;
+    p.enclose(0, xl, xh);
+    p.enclose(1, yl, yh);
+    if (!enclose_y_over(c, xl, xh, lo, hi)) return 0;
+    if (yh < lo) return -1;
+    if (yl > hi) return 1;
+    return 0;
+  }
+
   /// Sign of y(p) - y(arc at x(p)) (p in the x-range of the non-vertical arc).
   static int compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
     if (c.is_vertical()) {
-      const int lo = p.y().compare(c.left().y());
-      if (lo < 0) return -1;
-      const int hi = p.y().compare(c.right().y());
-      return hi > 0 ? 1 : 0;
+      if (compare_coordinate(p, c.left(), 1) < 0) return -1;
+      return compare_coordinate(p, c.right(), 1) > 0 ? 1 : 0;
     }
     for (const auto& o : p.origins())
       if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return 0;
     for (const Point_2* e : {&c.left(), &c.right()})
-      if (cmp_x(p, *e) == 0) return p.y().compare(e->y());
+      if (cmp_x(p, *e) == 0) return compare_coordinate(p, *e, 1);
+    const int f = filtered_compare_y_at_x(p, c);
+    if (f != 0) return f;
     auto r = internal::arr_parameters_at(*c.supporting(), 0, p.x(), c.parameter_min(), c.parameter_max());
     if (r.size() != 1) throw Error("Arr_rational_bezier_traits_2: compare_y_at_x outside the x-range of the arc");
     const int s = -internal::arr_compare_value(c.supporting()->num[1], c.supporting()->den[1], r[0], p.y());
@@ -306,18 +401,34 @@ class Arr_rational_bezier_traits_2 {
     const int dir = right ? 1 : -1;
     // A vertical arc at p lies (lexicographically) just above p on the right side, just below it on the left.
     if (c1.is_vertical() || c2.is_vertical()) return (int(c1.is_vertical()) - int(c2.is_vertical())) * dir;
-    Algebraic_real bound = right ? (c1.right().x() < c2.right().x() ? c1.right().x() : c2.right().x())
-                                 : (c1.left().x() > c2.left().x() ? c1.left().x() : c2.left().x());
+    // the nearest abscissa beyond p where something happens, as a point
+    Point_2 bound = right ? (cmp_x(c1.right(), c2.right()) < 0 ? c1.right() : c2.right())
+                          : (cmp_x(c1.left(), c2.left()) > 0 ? c1.left() : c2.left());
     auto consider = [&](const Point_2& q) {
       if (q.is_same(p)) return;
-      const int side = q.x().compare(p.x()) * dir;
-      if (side > 0 && (q.x().compare(bound) * dir) < 0) bound = q.x();
+      const int side = cmp_x(q, p) * dir;
+      if (side > 0 && cmp_x(q, bound) * dir < 0) bound = q;
     };
     const Pair_entry e = intersections(c1.supporting(), c2.supporting());
     for (const auto& ip : e.points) consider(ip.p);
     for (const auto& o : e.overlaps)
       for (const Algebraic_real* t : {&o.s0, &o.s1}) consider(Point_2(c1.supporting(), *t));
-    const Rational xs = p.x().rational_between(bound);
+    // a rational strictly between x(p) and x(bound) (they differ: refine until the enclosures separate)
+    Rational xs;
+    for (;;) {
+      Rational a, b, c, d;
+      p.enclose(0, a, b);
+      bound.enclose(0, c, d);
+      if (right && b < c) { xs = internal::simplest_rational_between(b, c); break; }
+      if (!right && d < a) { xs = internal::simplest_rational_between(d, a); break; }
+      p.refine(0);
+      bound.refine(0);
+    }
+    Rational l1, h1, l2, h2;
+    if (enclose_y_over(c1, xs, xs, l1, h1) && enclose_y_over(c2, xs, xs, l2, h2)) {
+      if (h1 < l2) return -1;
+      if (h2 < l1) return 1;
+    }
     const Algebraic_real y1 = y_at(c1, xs), y2 = y_at(c2, xs);
     return y1.compare(y2);
   }
@@ -363,7 +474,7 @@ class Arr_rational_bezier_traits_2 {
   /// The arc of s on [t0, t1] (t0 < t1) with known end points.
   static X_monotone_curve_2 make_arc(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t0,
                                      const Algebraic_real& t1, const Point_2& p0, const Point_2& p1) {
-    const int c = s->vertical ? p0.y().compare(p1.y()) : p0.x().compare(p1.x());
+    const int c = compare_coordinate(p0, p1, s->vertical ? 1 : 0);
     if (c == 0) throw Error("Arr_rational_bezier_traits_2: degenerate arc");
     return X_monotone_curve_2(s, t0, t1, p0, p1, c < 0);
   }
