@@ -152,6 +152,83 @@ TEST_CASE("arrangement traits: overlapping pieces of one parabola", "[arrangemen
   check({arch, ext.reversed()}, 4, 3, 1);
 }
 
+namespace {
+// The mirror image of a polynomial curve across its tangent line at the rational parameter t0. The reflection
+// across a line of rational direction (a, b) is the rational matrix [[a^2-b^2, 2ab], [2ab, b^2-a^2]] / (a^2+b^2),
+// so the image has rational control points; the two curves are tangent at C(t0).
+Curve mirrored_at(const Curve& c, const Rational& t0) {
+  const auto d = c.derivative()(t0);
+  const auto p0 = c(t0);
+  const Rational a = d[0], b = d[1], n = a * a + b * b;
+  std::vector<Pt> q;
+  for (const auto& p : c.control_points()) {
+    const Rational x = p[0] - p0[0], y = p[1] - p0[1];
+    q.push_back(Pt{p0[0] + ((a * a - b * b) * x + 2 * a * b * y) / n, p0[1] + (2 * a * b * x + (b * b - a * a) * y) / n});
+  }
+  return Curve(q);
+}
+}  // namespace
+
+TEST_CASE("arrangement traits: tangency stress, random cubics and their mirror images across a tangent", "[arrangement]") {
+  std::mt19937 g(7);
+  for (int i = 0; i < 8; ++i) {
+    std::vector<Pt> p;
+    for (int j = 0; j < 4; ++j) p.push_back(Pt{Rational(long(g() % 100)), Rational(long(g() % 100))});
+    const Curve c(p);
+    const Rational t0(int(1 + g() % 6), 7);
+    const Curve m = mirrored_at(c, t0);
+    Traits tr;
+    Arr arr(&tr);
+    const std::vector<Curve> pair{c, m};
+    CGAL::insert(arr, pair.begin(), pair.end());
+    INFO("case " << i);
+    CHECK(arr.is_valid());
+    // The touching point C(t0) (exact rational) is a vertex where the two curves meet: degree 4.
+    const auto q = c(t0);
+    const Traits::Point_2 touch(q[0], q[1]);
+    bool found = false;
+    for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+      if (tr.equal_2_object()(v->point(), touch)) {
+        found = true;
+        CHECK(v->degree() == 4);
+      }
+    CHECK(found);
+    // aggregated and incremental insertion agree
+    const Counts a = counts_of({c, m}), b = counts_of({c, m}, true);
+    CHECK(a.v == arr.number_of_vertices());
+    CHECK(b.v == a.v);
+    CHECK(b.e == a.e);
+    CHECK(b.f == a.f);
+  }
+}
+
+TEST_CASE("arrangement traits: point location in the lens of two circles", "[arrangement]") {
+  std::vector<Curve> two = circle(0, 0, 1), b = circle(1, 0, 1);
+  two.insert(two.end(), b.begin(), b.end());
+  Traits tr;
+  Arr arr(&tr);
+  CGAL::insert(arr, two.begin(), two.end());
+  CGAL::Arr_naive_point_location<Arr> pl(arr);
+  auto face_of = [&](const Rational& x, const Rational& y) {
+    const auto obj = pl.locate(Traits::Point_2(x, y));
+    const Arr::Face_const_handle* f = boost::get<Arr::Face_const_handle>(&obj);
+    REQUIRE(f != nullptr);
+    return *f;
+  };
+  const auto lens = face_of(Rational(1, 2), 0), left = face_of(Rational(-1, 2), 0), right = face_of(Rational(3, 2), 0);
+  const auto out = face_of(5, 5);
+  CHECK(out->is_unbounded());
+  CHECK(!lens->is_unbounded());
+  CHECK(lens != left);
+  CHECK(lens != right);
+  CHECK(left != right);
+  CHECK(face_of(Rational(1, 2), Rational(1, 3)) == lens);
+  // (1/2, 9/10) lies outside both circles (x^2 + y^2 = (x-1)^2 + y^2 = 1.06): the unbounded face.
+  CHECK(face_of(Rational(1, 2), Rational(9, 10)) == out);
+  // (1/2, 17/20): 0.9725 < 1 inside both: the lens, close to the irrational vertex (1/2, 0.866...)
+  CHECK(face_of(Rational(1, 2), Rational(17, 20)) == lens);
+}
+
 TEST_CASE("arrangement traits: invalid input is rejected", "[arrangement]") {
   Traits tr;
   Arr arr(&tr);
