@@ -126,10 +126,11 @@ void run_curve_intersect(const Intersect_options& o) {
   const Curves A = load_curves(o.file_a);
   Curves B;
   if (!o.file_b.empty()) B = load_curves(o.file_b);
-  const bool patch_involved = (A.has_patches && A.c2.empty() && A.c3.empty()) ||
-                              (!o.file_b.empty() && B.has_patches && B.c2.empty() && B.c3.empty());
-  if (patch_involved)
-    throw bezoutian::Error("curve/patch intersection (du-1989 Problems 2.2a/b) is not implemented yet");
+  const bool patch_involved = A.has_patches || (!o.file_b.empty() && B.has_patches);
+  if (patch_involved) {
+    void run_curve_patch_intersect(const Intersect_options& o);  // examples/cli/curve_patch_intersect.cpp
+    return run_curve_patch_intersect(o);
+  }
   if (o.file_b.empty()) {
     if (A.c2.size() >= 2) return run(A.c2[0], A.c2[1], o.method, o.json);
     if (A.c3.size() >= 2) return run(A.c3[0], A.c3[1], o.method, o.json);

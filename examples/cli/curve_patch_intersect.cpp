@@ -1,0 +1,116 @@
+// bezoutian intersect for a space curve (or segment) and a patch: certified curve/patch intersection
+// (include/bezoutian/Curve_surface_intersection.h, du-1989 Problems 2.2a/2.2b).
+#include "commands.h"
+#include "load.h"
+
+#include <bezoutian/Curve_surface_intersection.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/io/Exact_number.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using bezoutian::Algebraic_real;
+using bezoutian::Rational;
+
+std::string exact(const Rational& q) { return bezoutian::io::to_exact_string(q); }
+
+std::string exact_or_decimal(const Algebraic_real& a) {
+  return a.is_rational() ? exact(a.rational_value()) : a.to_decimal_string(30);
+}
+
+nlohmann::json interval(const Algebraic_real& a) {
+  if (a.is_rational()) return {exact(a.rational_value()), exact(a.rational_value())};
+  return {exact(a.lower()), exact(a.upper())};
+}
+
+// C(r) to 20 significant digits: C evaluated exactly at a rational within 2^-200 of r.
+std::vector<std::string> point(const bezoutian::Rational_bezier_curve_3<>& c, const Algebraic_real& r) {
+  Rational x;
+  if (r.is_rational()) {
+    x = r.rational_value();
+  } else {
+    Rational w(1);
+    for (int i = 0; i < 200; ++i) w /= 2;
+    r.refine_to_width(w);
+    x = r.lower();
+  }
+  std::vector<std::string> p;
+  for (const Rational& v : c(x)) p.push_back(Algebraic_real(v).to_decimal_string(20));
+  return p;
+}
+
+}  // namespace
+
+namespace bezoutian_cli {
+
+/// The curve is the first space curve and the patch the first patch found in FILE_A, then FILE_B.
+void run_curve_patch_intersect(const Intersect_options& o) {
+  std::vector<bezoutian::Rational_bezier_curve_3<>> curves;
+  std::vector<bezoutian::Rational_bezier_patch<>> patches;
+  for (const std::string& path : {o.file_a, o.file_b}) {
+    if (path.empty()) continue;
+    Loaded_file f = load_and_validate(path);
+    for (const auto& w : f.warnings) std::cerr << "warning: " << w << "\n";
+    curves.insert(curves.end(), f.doc.curves_3.begin(), f.doc.curves_3.end());
+    patches.insert(patches.end(), f.doc.patches.begin(), f.doc.patches.end());
+  }
+  if (curves.empty() || patches.empty())
+    throw bezoutian::Invalid_input("curve/patch intersection needs a space curve and a patch (planar curves cannot "
+                                   "meet a patch in 3D)");
+  if (o.method != "default")
+    throw bezoutian::Invalid_input("curve/patch intersection has only the default method");
+  const auto& c = curves.front();
+  const auto t0 = std::chrono::steady_clock::now();
+  const bezoutian::Curve_patch_intersection_result r = bezoutian::intersect_curve_patch(c, patches.front());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.json) {
+    nlohmann::json j;
+    j["method"] = "default";
+    j["object_b"] = "patch";
+    nlohmann::json pts = nlohmann::json::array();
+    for (const auto& p : r.points) {
+      nlohmann::json q;
+      q["s"] = p.r.to_decimal_string(30);
+      q["u"] = p.u.to_decimal_string(30);
+      q["v"] = p.v.to_decimal_string(30);
+      q["s_interval"] = interval(p.r);
+      q["u_interval"] = interval(p.u);
+      q["v_interval"] = interval(p.v);
+      q["s_rational"] = p.r.is_rational();
+      q["point"] = point(c, p.r);
+      q["multiplicity"] = p.multiplicity;
+      q["kind"] = bezoutian::to_string(p.kind);
+      q["tangent"] = p.tangent;
+      pts.push_back(q);
+    }
+    j["intersections"] = pts;
+    nlohmann::json ov = nlohmann::json::array();
+    for (const auto& v : r.overlaps) ov.push_back({{"s", {exact_or_decimal(v.r0), exact_or_decimal(v.r1)}}});
+    j["overlaps"] = ov;
+    j["seconds"] = seconds;
+    std::cout << j.dump(1) << "\n";
+    return;
+  }
+  std::cout << r.points.size() << " intersection" << (r.points.size() == 1 ? "" : "s") << ", " << r.overlaps.size()
+            << " overlap" << (r.overlaps.size() == 1 ? "" : "s") << " (curve/patch, " << seconds << " s)\n";
+  for (const auto& p : r.points) {
+    std::cout << "  s = " << p.r.to_decimal_string(30) << (p.r.is_rational() ? " (= " + exact(p.r.rational_value()) + ")" : "")
+              << "\n  u = " << p.u.to_decimal_string(30) << (p.u.is_rational() ? " (= " + exact(p.u.rational_value()) + ")" : "")
+              << "\n  v = " << p.v.to_decimal_string(30) << (p.v.is_rational() ? " (= " + exact(p.v.rational_value()) + ")" : "")
+              << "\n  point (";
+    const auto q = point(c, p.r);
+    for (std::size_t k = 0; k < q.size(); ++k) std::cout << (k ? ", " : "") << q[k];
+    std::cout << "), " << bezoutian::to_string(p.kind) << ", multiplicity " << p.multiplicity << "\n";
+  }
+  for (const auto& v : r.overlaps)
+    std::cout << "  overlap: s in [" << exact_or_decimal(v.r0) << ", " << exact_or_decimal(v.r1) << "]\n";
+}
+
+}  // namespace bezoutian_cli
