@@ -2,8 +2,10 @@
 // CGAL's Arr_Bezier_curve_traits_2 (CORE number types, as in CGAL's Bezier example), same inputs, one run.
 // Each arrangement is computed in a forked child process, so that its peak memory (ru_maxrss from wait4) is its
 // own and a crash of one traits class is reported instead of ending the benchmark.
-//   arrangement_benchmark [SETS="3:20,3:40,5:20"] [SEED=1] [FILE.dat ...]
-// SETS lists degree:count pairs; files are CGAL Bezier .dat files (e.g. CGAL's Bezier example data).
+//   arrangement_benchmark [SETS="3:20,3:40,5:20,tangent:40"] [SEED=1] [FILE.dat ...]
+// SETS lists degree:count pairs, and tangent:N for N tangency stress cases (a random cubic and its mirror image
+// across its tangent line at a rational parameter, each pair its own arrangement); files are CGAL Bezier .dat
+// files (e.g. CGAL's Bezier example data, examples/Arrangement_on_surface_2/Bezier.dat in libcgal-demo).
 #include <bezoutian/Arr_rational_bezier_traits_2.h>
 #include <bezoutian/io/Geometry_document.h>
 
@@ -16,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -160,16 +164,70 @@ void report(const std::string& name, const std::vector<Net>& nets) {
   std::fflush(stdout);
 }
 
+// The mirror image of a polynomial control net across the tangent line of the curve at t0 (rational reflection
+// matrix for the rational tangent direction (a, b)): the two curves touch at C(t0).
+Net mirrored_at(const Net& net, const bezoutian::Rational& t0) {
+  bezoutian::Rational_bezier_curve_2<bezoutian::Rational> c([&] {
+    std::vector<std::array<bezoutian::Rational, 2>> p;
+    for (const auto& q : net) p.push_back({q.first, q.second});
+    return p;
+  }());
+  const auto d = c.derivative()(t0);
+  const auto p0 = c(t0);
+  const bezoutian::Rational a = d[0], b = d[1], n = a * a + b * b;
+  Net out;
+  for (const auto& q : net) {
+    const bezoutian::Rational x = q.first - p0[0], y = q.second - p0[1];
+    out.push_back({p0[0] + ((a * a - b * b) * x + 2 * a * b * y) / n, p0[1] + (2 * a * b * x + (b * b - a * a) * y) / n});
+  }
+  return out;
+}
+
+void tangent_stress(unsigned seed, int n) {
+  std::mt19937 g(seed);
+  int same = 0, differ = 0, ours_failed = 0, cgal_failed = 0;
+  double ours_ms = 0, cgal_ms = 0;
+  long ours_kb = 0, cgal_kb = 0;
+  for (int i = 0; i < n; ++i) {
+    Net c;
+    for (int j = 0; j < 4; ++j) c.push_back({bezoutian::Rational(long(g() % 100)), bezoutian::Rational(long(g() % 100))});
+    const bezoutian::Rational t0(int(1 + g() % 6), 7);
+    const std::vector<Net> nets{c, mirrored_at(c, t0)};
+    const Outcome a = in_child([&] { return run_ours(nets); });
+    const Outcome b = in_child([&] { return run_cgal(nets); });
+    ours_kb = std::max(ours_kb, a.max_rss_kb);
+    cgal_kb = std::max(cgal_kb, b.max_rss_kb);
+    if (!a.ok || !a.valid) ++ours_failed;
+    if (!b.ok || !b.valid) ++cgal_failed;
+    if (a.ok && b.ok) {
+      ours_ms += a.ms;
+      cgal_ms += b.ms;
+      (a.v == b.v && a.e == b.e && a.f == b.f) ? ++same : ++differ;
+    }
+    if (!a.ok) std::printf("  case %d: ours %s\n", i, a.error.c_str());
+    if (!b.ok) std::printf("  case %d: CGAL %s\n", i, b.error.c_str());
+  }
+  std::printf("%-18s | ours failed/invalid %d, CGAL failed/invalid %d | both ran: %d same V/E/F, %d differ | "
+              "time where both ran: ours %.1f ms, CGAL %.1f ms | peak %ld / %ld MB\n",
+              ("tangent pairs x" + std::to_string(n)).c_str(), ours_failed, cgal_failed, same, differ, ours_ms, cgal_ms,
+              ours_kb / 1024, cgal_kb / 1024);
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string sets = argc > 1 ? argv[1] : "3:20,3:40,5:20";
+  const std::string sets = argc > 1 ? argv[1] : "3:20,3:40,5:20,tangent:40";
   const unsigned seed = argc > 2 ? unsigned(std::atoi(argv[2])) : 1u;
   std::printf("V/E/F valid time peak-memory (forked child each); random control points in [0,1000)^2, seed %u\n", seed);
   std::istringstream in(sets);
   std::string item;
   while (std::getline(in, item, ',')) {
     const auto c = item.find(':');
+    if (item.substr(0, c) == "tangent") {
+      tangent_stress(seed, std::atoi(item.substr(c + 1).c_str()));
+      continue;
+    }
     const int degree = std::atoi(item.substr(0, c).c_str()), n = std::atoi(item.substr(c + 1).c_str());
     report(std::to_string(n) + " curves deg " + std::to_string(degree), random_nets(seed, n, degree));
   }
