@@ -11,6 +11,7 @@
 #ifndef BEZOUTIAN_SURFACE_INTERSECTION_H
 #define BEZOUTIAN_SURFACE_INTERSECTION_H
 
+#include <bezoutian/Curve_topology_by_subdivision.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -34,10 +35,14 @@ struct Surface_intersection_options {
   int samples_per_arc = 24;
   double tolerance = 1e-9;
   Bezoutian_formula formula = Bezoutian_formula::automatic;
-  /// The certified topology uses CGAL's whole-plane curve analysis, whose cost explodes with the degree;
-  /// above this total degree of D the topology is not attempted (Surface_locus::topology_computed == false)
-  /// instead of running for hours. See doc/surface_intersection.md for measured times.
+  /// The certified topology is first computed by Bernstein subdivision in the box (any degree; certified when
+  /// D = 0 has no singular point there, Curve_topology_by_subdivision.h). If that does not certify, CGAL's
+  /// whole-plane curve analysis is used, whose cost explodes with the degree: above this total degree of D it
+  /// is not attempted (Surface_locus::topology_computed == false) instead of running for hours. See
+  /// doc/surface_intersection.md for measured times.
   int max_total_degree_for_topology = 16;
+  /// Limits of the subdivision.
+  Subdivision_topology_options subdivision;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
@@ -65,6 +70,8 @@ struct Surface_locus {
   Curve_topology_in_box topology;
   std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
   bool topology_computed = false;
+  /// "subdivision" (Bernstein subdivision in the box) or "curve analysis" (CGAL's arrangement), if computed
+  std::string topology_method;
   std::string note;  ///< why the topology was not computed, if it was not
 };
 
@@ -235,15 +242,24 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   int total = -1;
   for (int j = 0; j <= D.degree(); ++j)
     if (!CGAL::is_zero(D[j])) total = std::max(total, j + D[j].degree());
+  const Subdivision_topology_result sub = subdivide_curve_in_box(D, o.box, o.subdivision);
+  if (sub.certified) {
+    L.topology = sub.topology;
+    L.topology_computed = true;
+    L.topology_method = "subdivision";
+    return true;
+  }
   if (total > o.max_total_degree_for_topology) {
     L.note = "the certified topology of D = 0 (total degree " + std::to_string(total) +
-             ") was not attempted: above max_total_degree_for_topology = " +
-             std::to_string(o.max_total_degree_for_topology) +
-             ": CGAL's whole-plane curve analysis takes too long; the implicit equation D is exact";
+             ") was not computed: the subdivision did not certify it (" + sub.reason +
+             ") and CGAL's whole-plane curve analysis is not attempted above max_total_degree_for_topology = " +
+             std::to_string(o.max_total_degree_for_topology) + "; the implicit equation D is exact";
     return false;
   }
   L.topology = analyse_curve_in_box(D, o.box, o.tolerance, o.samples_per_arc);
   L.topology_computed = true;
+  L.topology_method = "curve analysis";
+  if (L.note.empty()) L.note = "subdivision: " + sub.reason + "; topology by CGAL's curve analysis";
   return true;
 }
 

@@ -1,0 +1,70 @@
+// The result type of the certified topology of a plane curve D(u,v) = 0 inside a parameter box: vertices with
+// certified enclosures, arcs with sample points, connected components. Produced by analyse_curve_in_box()
+// (CGAL's curve analysis, Curve_topology_in_box.h) and by subdivide_curve_in_box()
+// (Curve_topology_by_subdivision.h).
+#ifndef BEZOUTIAN_CURVE_TOPOLOGY_H
+#define BEZOUTIAN_CURVE_TOPOLOGY_H
+
+#include <bezoutian/number_types.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace bezoutian {
+
+/// A closed axis-parallel box [u0,u1] x [v0,v1] with rational corners (u0 < u1, v0 < v1).
+struct Parameter_box {
+  Rational u0{0}, u1{1}, v0{0}, v1{1};
+  bool contains(double u, double v) const {
+    return CGAL::to_double(u0) <= u && u <= CGAL::to_double(u1) && CGAL::to_double(v0) <= v &&
+           v <= CGAL::to_double(v1);
+  }
+};
+
+/// A vertex of the curve inside the box.
+struct Curve_topology_vertex {
+  enum Kind { regular, singular, boundary, isolated };
+  Kind kind = regular;
+  /// Certified enclosure of the point: u in [u_lo,u_hi], v in [v_lo,v_hi] (rationals converted outward to double).
+  double u = 0, v = 0, u_lo = 0, u_hi = 0, v_lo = 0, v_hi = 0;
+  /// Number of arcs of the curve inside the box that end here (half-branches).
+  int half_branches = 0;
+  /// Number of real branches through the point: half_branches / 2 for an interior point (a cusp counts 1).
+  int branches = 0;
+  bool on_boundary = false;
+};
+
+/// An arc of the curve inside the box between two vertices, with certified sample points along it.
+struct Curve_topology_edge {
+  std::size_t source = 0, target = 0;
+  std::vector<std::array<double, 2>> polyline;  ///< from source to target
+};
+
+/// A connected component of (D = 0) ∩ box.
+struct Curve_topology_component {
+  bool closed = false;                ///< does not meet the box boundary
+  bool isolated_point = false;        ///< a single real point (acnode)
+  std::vector<std::size_t> edges;     ///< indices into Curve_topology_in_box::edges
+  std::vector<std::size_t> vertices;  ///< indices into Curve_topology_in_box::vertices
+};
+
+/// The result of analyse_curve_in_box().
+struct Curve_topology_in_box {
+  Parameter_box box;
+  std::vector<Curve_topology_vertex> vertices;
+  std::vector<Curve_topology_edge> edges;
+  std::vector<Curve_topology_component> components;
+  std::size_t number_of_singular_points() const {
+    return std::count_if(vertices.begin(), vertices.end(),
+                         [](const Curve_topology_vertex& v) { return v.kind == Curve_topology_vertex::singular; });
+  }
+  std::size_t number_of_boundary_points() const {
+    return std::count_if(vertices.begin(), vertices.end(), [](const Curve_topology_vertex& v) { return v.on_boundary; });
+  }
+};
+
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_CURVE_TOPOLOGY_H

@@ -1,0 +1,676 @@
+// Certified topology of a plane algebraic curve D(u,v) = 0 inside a box by Bernstein subdivision: the work is
+// proportional to what the curve does inside the box, not to its degree over the whole plane (CGAL's curve
+// analysis, Curve_topology_in_box.h, is exact but its cost explodes beyond total degree ~16; the loci of bicubic
+// patches have degree 64-108, buse-elkadi-galligo-2008 §3-4).
+//
+// Method. D is written in the Bernstein basis of each sub-box with MPFI interval coefficients (outward rounding:
+// every interval encloses the exact coefficient). A sub-box is
+//  * excluded if all coefficients of D have one strict sign (the Bernstein polynomial is a convex combination of
+//    them: D has no zero on the closed box);
+//  * simple if all forward differences of the coefficients in v (resp. u) have one strict sign, i.e. dD/dv != 0
+//    (resp. dD/du != 0) on the closed box. Then every vertical (horizontal) segment of the box meets the curve at
+//    most once, so the curve inside the box is a disjoint union of arcs that are graphs v = g(u) over disjoint
+//    u-intervals, each with both ends on the boundary (a branch cannot end inside the box, and a graph cannot
+//    close up). The crossings with the boundary are computed exactly (real roots of D on the box lines, exact
+//    isolation, shared by the boxes along a line); sorted by u, consecutive crossings are the ends of one arc.
+//    A crossing at a box corner or a multiple root on an edge (tangency with a box line) makes the box not
+//    simple;
+//    A crossing at a corner of the domain is kept if the curve enters the box there (exact signs of dD/du,
+//    dD/dv at the rational corner); a crossing at an inner grid vertex is not handled (the result is then not
+//    certified);
+//  * otherwise split at the non-dyadic ratios 15/31 (u) and 16/33 (v) (symmetric data often has features on
+//    dyadic lines such as u = 1/2 or on the diagonal; the split lines and grid vertices avoid them).
+// The arcs glue along the exact crossings into the components. The result is certified when every sub-box is
+// excluded or simple: the curve has then no singular point in the box (near a singular or isolated point
+// neither derivative keeps a sign, and the subdivision stops at `max_depth` with `certified == false`, naming
+// the unresolved boxes). Arc sample points are floating-point (bisection on a vertical/horizontal segment where
+// the exact analysis proved exactly one crossing); vertex enclosures are exact isolating intervals.
+#ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
+#define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
+
+#include <bezoutian/Curve_topology.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/Root_isolation.h>
+#include <bezoutian/number_types.h>
+
+#include <CGAL/Polynomial.h>
+
+#include <mpfi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bezoutian {
+
+/// Limits of subdivide_curve_in_box().
+struct Subdivision_topology_options {
+  int max_depth = 36;              ///< deepest split level (boxes of width about 0.5^36 of the domain)
+  std::size_t max_boxes = 400000;  ///< total number of boxes examined
+  int samples_per_arc = 6;         ///< floating-point sample points per arc piece inside one leaf box
+};
+
+/// Result of subdivide_curve_in_box().
+struct Subdivision_topology_result {
+  bool certified = false;                 ///< the topology below is proved
+  Curve_topology_in_box topology;         ///< meaningful only if certified
+  std::vector<Parameter_box> unresolved;  ///< boxes that were neither excluded nor simple at max_depth
+  std::size_t boxes = 0;                  ///< boxes examined
+  std::string reason;                     ///< why not certified
+};
+
+namespace internal {
+
+// A (a+1) x (b+1) grid of MPFI intervals (Bernstein coefficients c[i][j], i along u).
+class Interval_grid {
+ public:
+  Interval_grid(int a, int b, mpfr_prec_t prec) : a_(a), b_(b), v_(new __mpfi_struct[std::size_t(a + 1) * (b + 1)]) {
+    for (std::size_t k = 0; k < size(); ++k) mpfi_init2(&v_[k], prec);
+  }
+  Interval_grid(const Interval_grid&) = delete;
+  Interval_grid& operator=(const Interval_grid&) = delete;
+  ~Interval_grid() {
+    for (std::size_t k = 0; k < size(); ++k) mpfi_clear(&v_[k]);
+  }
+  std::size_t size() const { return std::size_t(a_ + 1) * (b_ + 1); }
+  mpfi_ptr at(int i, int j) { return &v_[std::size_t(i) * (b_ + 1) + j]; }
+  mpfi_srcptr at(int i, int j) const { return &v_[std::size_t(i) * (b_ + 1) + j]; }
+  int a() const { return a_; }
+  int b() const { return b_; }
+
+ private:
+  int a_, b_;
+  std::unique_ptr<__mpfi_struct[]> v_;
+};
+
+// +1 / -1 if every interval of the list is strictly positive / negative, 0 otherwise.
+template <class Get>
+int common_sign(int n, Get get) {
+  int s = 0;
+  for (int k = 0; k < n; ++k) {
+    mpfi_srcptr x = get(k);
+    const int t = mpfi_is_strictly_pos(x) ? 1 : (mpfi_is_strictly_neg(x) ? -1 : 0);
+    if (t == 0 || (s != 0 && t != s)) return 0;
+    s = t;
+  }
+  return s;
+}
+
+class Subdivision_topology {
+ public:
+  Subdivision_topology(const Polynomial_2<Integer>& D, const Parameter_box& box, const Subdivision_topology_options& o)
+      : D_(D), box_(box), o_(o) {
+    a_ = 0;
+    b_ = D.degree();
+    long bits = 0;
+    for (int j = 0; j <= D.degree(); ++j)
+      if (!CGAL::is_zero(D[j])) {
+        a_ = std::max(a_, D[j].degree());
+        for (int i = 0; i <= D[j].degree(); ++i) bits = std::max(bits, long(D[j][i].bit_size()));
+      }
+    bits_ = bits;
+    prec_ = mpfr_prec_t(192 + 4 * (a_ + b_));
+    // scaled double copy of D for sample points: coefficient * 2^-bits
+    scaled_.assign(std::size_t(a_ + 1) * (b_ + 1), 0.0L);
+    for (int j = 0; j <= D.degree(); ++j)
+      for (int i = 0; i <= D[j].degree(); ++i) {
+        long e = 0;
+        const double m = mpz_get_d_2exp(&e, D[j][i].mpz());
+        scaled_[std::size_t(i) * (b_ + 1) + j] = std::ldexp((long double)m, int(e - bits));
+      }
+  }
+
+  Subdivision_topology_result run() {
+    Subdivision_topology_result res;
+    Box root{box_.u0, box_.u1, box_.v0, box_.v1, 0, std::make_shared<Interval_grid>(a_, b_, prec_)};
+    bernstein_on_box(*root.grid);
+    std::vector<Box> stack{root};
+    while (!stack.empty()) {
+      Box B = stack.back();
+      stack.pop_back();
+      if (++res.boxes > o_.max_boxes) {
+        res.reason = "more than " + std::to_string(o_.max_boxes) + " boxes";
+        return res;
+      }
+      const Interval_grid& g = *B.grid;
+      const int n = int(g.size());
+      if (common_sign(n, [&](int k) { return g.at(k / (b_ + 1), k % (b_ + 1)); }) != 0) continue;  // excluded
+      const bool dv = b_ >= 1 && difference_sign(g, false) != 0;
+      const bool du = a_ >= 1 && difference_sign(g, true) != 0;
+      if ((dv || du) && resolve(B, dv)) continue;
+      if (failed_) {
+        res.reason = failure_;
+        return res;
+      }
+      if (B.depth >= o_.max_depth) {
+        res.unresolved.push_back(Parameter_box{B.u0, B.u1, B.v0, B.v1});
+        continue;
+      }
+      split(B, stack);
+    }
+    if (!res.unresolved.empty()) {
+      res.reason = std::to_string(res.unresolved.size()) +
+                   " boxes near singular, isolated or tangential points were not resolved at depth " +
+                   std::to_string(o_.max_depth);
+      return res;
+    }
+    if (!assemble(res.topology)) {
+      res.reason = failure_;
+      return res;
+    }
+    res.certified = true;
+    return res;
+  }
+
+ private:
+  struct Box {
+    Rational u0, u1, v0, v1;
+    int depth;
+    std::shared_ptr<Interval_grid> grid;
+  };
+  // A crossing of D = 0 with a line: vertical (u = c) or horizontal (v = c), root index on that line.
+  struct Node_key {
+    bool vertical;
+    Rational c;
+    int index;
+    bool operator<(const Node_key& o) const {
+      if (vertical != o.vertical) return vertical < o.vertical;
+      if (c != o.c) return c < o.c;
+      return index < o.index;
+    }
+  };
+  struct Arc {
+    std::size_t n0, n1;                          // nodes, ordered by the graph coordinate
+    std::vector<std::array<double, 2>> inner;    // sample points from n0 to n1 (exclusive)
+  };
+  struct Line {
+    std::vector<Isolated_root> roots;  // on the whole domain range of the other variable
+  };
+
+  // Sign of all forward differences along u (du) or v: the Bernstein coefficients of dD/du (dD/dv) up to a
+  // positive factor.
+  int difference_sign(const Interval_grid& g, bool along_u) const {
+    mpfi_t d;
+    mpfi_init2(d, prec_);
+    int s = 0;
+    bool ok = true;
+    for (int i = 0; i <= a_ && ok; ++i)
+      for (int j = 0; j <= b_ && ok; ++j) {
+        if (along_u ? i == a_ : j == b_) continue;
+        mpfi_sub(d, along_u ? g.at(i + 1, j) : g.at(i, j + 1), g.at(i, j));
+        const int t = mpfi_is_strictly_pos(d) ? 1 : (mpfi_is_strictly_neg(d) ? -1 : 0);
+        if (t == 0 || (s != 0 && t != s)) ok = false;
+        s = t;
+      }
+    mpfi_clear(d);
+    return ok ? s : 0;
+  }
+
+  // Bernstein coefficients of D on the root box: shift and scale the power form (interval Taylor shifts), then
+  // b_kl = sum_{i<=k, j<=l} C(k,i) C(l,j) / (C(a,i) C(b,j)) e_ij.
+  void bernstein_on_box(Interval_grid& g) const {
+    Interval_grid e(a_, b_, prec_);
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        const bool has = j <= D_.degree() && !CGAL::is_zero(D_[j]) && i <= D_[j].degree();
+        if (has)
+          mpfi_set_z(e.at(i, j), D_[j][i].mpz());
+        else
+          mpfi_set_ui(e.at(i, j), 0);
+      }
+    mpfi_t c, w, t;
+    mpfi_init2(c, prec_);
+    mpfi_init2(w, prec_);
+    mpfi_init2(t, prec_);
+    // u -> u0 + (u1 - u0) x for every column j
+    for (int pass = 0; pass < 2; ++pass) {
+      const bool along_u = pass == 0;
+      const int n = along_u ? a_ : b_, m = along_u ? b_ : a_;
+      const Rational& lo = along_u ? box_.u0 : box_.v0;
+      const Rational& hi = along_u ? box_.u1 : box_.v1;
+      mpfi_set_q(c, lo.mpq());
+      const Rational wd = hi - lo;
+      mpfi_set_q(w, wd.mpq());
+      auto at = [&](int k, int l) { return along_u ? e.at(k, l) : e.at(l, k); };
+      for (int l = 0; l <= m; ++l) {
+        if (!CGAL::is_zero(lo))  // Taylor shift by lo (synthetic division, O(n^2))
+          for (int k = 0; k < n; ++k)
+            for (int r = n - 1; r >= k; --r) {
+              mpfi_mul(t, at(r + 1, l), c);
+              mpfi_add(at(r, l), at(r, l), t);
+            }
+        mpfi_set_ui(t, 1);
+        for (int k = 0; k <= n; ++k) {  // scale x^k by width^k
+          mpfi_mul(at(k, l), at(k, l), t);
+          mpfi_mul(t, t, w);
+        }
+      }
+    }
+    // power -> Bernstein, first along u then along v
+    auto binom = [](int n, int k) {
+      Integer r(1);
+      for (int i = 1; i <= k; ++i) r = r * Integer(n - k + i) / Integer(i);
+      return r;
+    };
+    for (int pass = 0; pass < 2; ++pass) {
+      const bool along_u = pass == 0;
+      const int n = along_u ? a_ : b_, m = along_u ? b_ : a_;
+      auto src = [&](int k, int l) { return along_u ? e.at(k, l) : e.at(l, k); };
+      std::vector<Rational> q(std::size_t(n + 1) * (n + 1));
+      for (int k = 0; k <= n; ++k)
+        for (int i = 0; i <= k; ++i) q[std::size_t(k) * (n + 1) + i] = Rational(binom(k, i)) / Rational(binom(n, i));
+      std::vector<__mpfi_struct> out(std::size_t(n + 1));
+      for (auto& x : out) mpfi_init2(&x, prec_);
+      for (int l = 0; l <= m; ++l) {
+        for (int k = 0; k <= n; ++k) {
+          mpfi_set_ui(&out[k], 0);
+          for (int i = 0; i <= k; ++i) {
+            mpfi_mul_q(t, src(i, l), q[std::size_t(k) * (n + 1) + i].mpq());
+            mpfi_add(&out[k], &out[k], t);
+          }
+        }
+        for (int k = 0; k <= n; ++k) mpfi_set(src(k, l), &out[k]);
+      }
+      for (auto& x : out) mpfi_clear(&x);
+    }
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) mpfi_set(g.at(i, j), e.at(i, j));
+    mpfi_clear(c);
+    mpfi_clear(w);
+    mpfi_clear(t);
+  }
+
+  // de Casteljau at ratio r along u (or v): left/right children.
+  void split_grid(const Interval_grid& g, bool along_u, Interval_grid& left, Interval_grid& right) const {
+    const int n = along_u ? a_ : b_, m = along_u ? b_ : a_;
+    mpfi_t r, s, t;
+    mpfi_init2(r, prec_);
+    mpfi_init2(s, prec_);
+    mpfi_init2(t, prec_);
+    mpfi_set_q(r, ratio(along_u).mpq());
+    mpfi_ui_sub(s, 1, r);
+    std::vector<__mpfi_struct> w(std::size_t(n + 1));
+    for (auto& x : w) mpfi_init2(&x, prec_);
+    for (int l = 0; l <= m; ++l) {
+      for (int k = 0; k <= n; ++k) mpfi_set(&w[k], along_u ? g.at(k, l) : g.at(l, k));
+      auto L = [&](int k) { return along_u ? left.at(k, l) : left.at(l, k); };
+      auto R = [&](int k) { return along_u ? right.at(k, l) : right.at(l, k); };
+      mpfi_set(L(0), &w[0]);
+      mpfi_set(R(n), &w[n]);
+      for (int level = 1; level <= n; ++level) {
+        for (int k = 0; k + level <= n; ++k) {
+          mpfi_mul(t, &w[k], s);
+          mpfi_mul(&w[k], &w[k + 1], r);
+          mpfi_add(&w[k], &w[k], t);
+        }
+        mpfi_set(L(level), &w[0]);
+        mpfi_set(R(n - level), &w[n - level]);
+      }
+    }
+    for (auto& x : w) mpfi_clear(&x);
+    mpfi_clear(r);
+    mpfi_clear(s);
+    mpfi_clear(t);
+  }
+
+  // Different non-dyadic ratios in u and v: the grid then never has a vertex on the diagonal u = v or at a
+  // dyadic point (symmetric data puts curve features there).
+  static Rational ratio(bool along_u) { return along_u ? Rational(15, 31) : Rational(16, 33); }
+
+  void split(const Box& B, std::vector<Box>& stack) const {
+    const Rational um = B.u0 + (B.u1 - B.u0) * ratio(true), vm = B.v0 + (B.v1 - B.v0) * ratio(false);
+    auto L = std::make_shared<Interval_grid>(a_, b_, prec_), R = std::make_shared<Interval_grid>(a_, b_, prec_);
+    split_grid(*B.grid, true, *L, *R);
+    for (int side = 0; side < 2; ++side) {
+      const auto& half = side == 0 ? L : R;
+      auto lo = std::make_shared<Interval_grid>(a_, b_, prec_), hi = std::make_shared<Interval_grid>(a_, b_, prec_);
+      split_grid(*half, false, *lo, *hi);
+      const Rational& u0 = side == 0 ? B.u0 : um;
+      const Rational& u1 = side == 0 ? um : B.u1;
+      stack.push_back(Box{u0, u1, B.v0, vm, B.depth + 1, lo});
+      stack.push_back(Box{u0, u1, vm, B.v1, B.depth + 1, hi});
+    }
+  }
+
+  // Exact roots of D on the line u = c (vertical) or v = c, over the domain range of the other variable.
+  const Line& line(bool vertical, const Rational& c) {
+    auto key = std::make_pair(vertical, c);
+    auto it = lines_.find(key);
+    if (it != lines_.end()) return it->second;
+    Polynomial_1<Rational> f(0);
+    if (vertical) {  // f(v) = sum_j D_j(c) v^j
+      std::vector<Rational> co;
+      for (int j = 0; j <= D_.degree(); ++j) {
+        Rational x(0);
+        if (!CGAL::is_zero(D_[j]))
+          for (int i = D_[j].degree(); i >= 0; --i) x = x * c + Rational(D_[j][i]);
+        co.push_back(x);
+      }
+      f = Polynomial_1<Rational>(co.begin(), co.end());
+    } else {  // f(u) = sum_j D_j(u) c^j
+      for (int j = D_.degree(); j >= 0; --j) {
+        std::vector<Rational> co;
+        if (!CGAL::is_zero(D_[j]))
+          for (int i = 0; i <= D_[j].degree(); ++i) co.push_back(Rational(D_[j][i]));
+        f = f * Polynomial_1<Rational>(c) + (co.empty() ? Polynomial_1<Rational>(0) : Polynomial_1<Rational>(co.begin(), co.end()));
+      }
+    }
+    Line L;
+    if (CGAL::is_zero(f)) {
+      fail(std::string("D vanishes on the whole line ") + (vertical ? "u = " : "v = ") + std::to_string(CGAL::to_double(c)));
+    } else if (f.degree() >= 1) {
+      L.roots = vertical ? isolate_real_roots(f, box_.v0, box_.v1) : isolate_real_roots(f, box_.u0, box_.u1);
+    }
+    return lines_.emplace(key, std::move(L)).first->second;
+  }
+
+  void fail(const std::string& why) {
+    if (!failed_) failure_ = why;
+    failed_ = true;
+  }
+
+  std::size_t node(bool vertical, const Rational& c, int index) {
+    const Node_key k{vertical, c, index};
+    auto it = nodes_.find(k);
+    if (it != nodes_.end()) return it->second;
+    keys_.push_back(k);
+    return nodes_[k] = keys_.size() - 1;
+  }
+
+  // A crossing on one edge of a box: its line, its root there and its position along the sorting coordinate.
+  struct Crossing {
+    bool vertical;
+    Rational c;
+    int index;
+    Algebraic_real position;  // u for dv-simple boxes, v for du-simple boxes
+  };
+
+  // Collects the crossings of the edge (line `vertical` at c, other coordinate in [lo, hi]). Returns false if a
+  // crossing is at an end (a box corner) or multiple (tangency with the line).
+  bool edge_crossings(bool vertical, const Rational& c, const Rational& lo, const Rational& hi, bool sort_by_u,
+                      std::vector<Crossing>& out) {
+    const Line& L = line(vertical, c);
+    if (failed_) return false;
+    for (std::size_t k = 0; k < L.roots.size(); ++k) {
+      const Algebraic_real& x = L.roots[k].root;
+      const int cl = x.compare(lo), ch = x.compare(hi);
+      if (cl < 0 || ch > 0) continue;
+      if (L.roots[k].multiplicity > 1) return false;
+      if (cl == 0 || ch == 0) {  // at a box corner: domain corners are handled by corner_crossing
+        const Rational& e = cl == 0 ? lo : hi;
+        const bool domain_corner = (vertical ? (c == box_.u0 || c == box_.u1) : (c == box_.v0 || c == box_.v1)) &&
+                                   (vertical ? (e == box_.v0 || e == box_.v1) : (e == box_.u0 || e == box_.u1));
+        if (!domain_corner) {
+          fail("the curve passes through a vertex of the subdivision grid");
+          return false;
+        }
+        continue;
+      }
+      // the sorting coordinate: along a vertical line u = c is fixed, along a horizontal one u = x
+      const bool coordinate_is_fixed = vertical == sort_by_u;
+      out.push_back(Crossing{vertical, c, int(k), coordinate_is_fixed ? Algebraic_real(c) : x});
+    }
+    return true;
+  }
+
+  // The curve through the domain corner (cu, cv) of box B (D(cu, cv) = 0): a crossing if the curve enters the box
+  // there, i.e. a tangent direction (D_v, -D_u) points strictly into the box's quadrant at that corner.
+  bool corner_crossing(const Box& B, const Rational& cu, const Rational& cv, bool sort_by_u, std::vector<Crossing>& out) {
+    Rational d(0), du(0), dv(0);  // exact values at the corner
+    for (int j = D_.degree(); j >= 0; --j) {
+      Rational p(0), dp(0);
+      if (!CGAL::is_zero(D_[j]))
+        for (int i = D_[j].degree(); i >= 0; --i) {
+          dp = dp * cu + p;
+          p = p * cu + Rational(D_[j][i]);
+        }
+      dv = dv * cv + d;
+      d = d * cv + p;
+      du = du * cv + dp;
+    }
+    if (d != 0) return true;
+    const int tx = CGAL::sign(dv), ty = -CGAL::sign(du);
+    if (tx == 0 || ty == 0) {
+      fail("the curve is singular or tangent to a domain edge at a corner of the domain");
+      return false;
+    }
+    const int sx = cu == B.u0 ? 1 : -1, sy = cv == B.v0 ? 1 : -1;
+    if (tx * sx != ty * sy) {
+      fail("the curve touches the domain at a corner only");
+      return false;
+    }
+    const Line& L = line(true, cu);
+    for (std::size_t k = 0; k < L.roots.size(); ++k)
+      if (L.roots[k].root.compare(cv) == 0) {
+        out.push_back(Crossing{true, cu, int(k), Algebraic_real(sort_by_u ? cu : cv)});
+        return true;
+      }
+    fail("internal inconsistency: a corner root is missing on its line");
+    return false;
+  }
+
+  // A simple box: crossings sorted along u (dv != 0) or v (du != 0); consecutive pairs are arcs.
+  bool resolve(const Box& B, bool dv_simple) {
+    std::vector<Crossing> cr;
+    const bool by_u = dv_simple;
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr))
+      return false;
+    for (const Rational* cu : {&B.u0, &B.u1})
+      for (const Rational* cv : {&B.v0, &B.v1})
+        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
+            !corner_crossing(B, *cu, *cv, by_u, cr))
+          return false;
+    if (cr.size() % 2 != 0) return false;  // cannot happen for a simple box; be safe and subdivide
+    std::sort(cr.begin(), cr.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
+    for (std::size_t k = 0; k + 1 < cr.size(); k += 2) {
+      Arc arc{node(cr[k].vertical, cr[k].c, cr[k].index), node(cr[k + 1].vertical, cr[k + 1].c, cr[k + 1].index), {}};
+      sample_arc(B, by_u, cr[k].position, cr[k + 1].position, arc.inner);
+      arcs_.push_back(arc);
+    }
+    return true;
+  }
+
+  long double eval(long double u, long double v) const {
+    long double r = 0;
+    for (int i = a_; i >= 0; --i) {
+      long double c = 0;
+      for (int j = b_; j >= 0; --j) c = c * v + scaled_[std::size_t(i) * (b_ + 1) + j];
+      r = r * u + c;
+    }
+    return r;
+  }
+
+  // Floating-point samples strictly between the two ends: the unique crossing of the segment u = const
+  // (v = const) with the curve, by bisection.
+  void sample_arc(const Box& B, bool by_u, const Algebraic_real& p0, const Algebraic_real& p1,
+                  std::vector<std::array<double, 2>>& out) const {
+    const double x0 = p0.to_double(), x1 = p1.to_double();
+    const long double lo = CGAL::to_double(by_u ? B.v0 : B.u0), hi = CGAL::to_double(by_u ? B.v1 : B.u1);
+    for (int k = 1; k < o_.samples_per_arc; ++k) {
+      const long double x = x0 + (x1 - x0) * (long double)k / o_.samples_per_arc;
+      auto f = [&](long double y) { return by_u ? eval(x, y) : eval(y, x); };
+      long double a = lo, b = hi, fa = f(a);
+      for (int it = 0; it < 64; ++it) {
+        const long double m = 0.5L * (a + b), fm = f(m);
+        if ((fm < 0) == (fa < 0)) a = m, fa = fm;
+        else b = m;
+      }
+      const double y = double(0.5L * (a + b));
+      out.push_back(by_u ? std::array<double, 2>{double(x), y} : std::array<double, 2>{y, double(x)});
+    }
+  }
+
+  Curve_topology_vertex vertex_of(std::size_t n) const {
+    const Node_key& k = keys_[n];
+    const Line& L = lines_.at(std::make_pair(k.vertical, k.c));
+    const Algebraic_real& x = L.roots[std::size_t(k.index)].root;
+    x.refine_to_width(Rational(1, 1 << 30) * Rational(1, 1 << 10));
+    const double c = CGAL::to_double(k.c);
+    const std::pair<double, double> xi = x.to_interval();
+    Curve_topology_vertex v;
+    v.u_lo = k.vertical ? c : xi.first;
+    v.u_hi = k.vertical ? c : xi.second;
+    v.v_lo = k.vertical ? xi.first : c;
+    v.v_hi = k.vertical ? xi.second : c;
+    v.u = 0.5 * (v.u_lo + v.u_hi);
+    v.v = 0.5 * (v.v_lo + v.v_hi);
+    v.on_boundary = on_domain_boundary(n);
+    v.kind = v.on_boundary ? Curve_topology_vertex::boundary : Curve_topology_vertex::regular;
+    return v;
+  }
+
+  bool on_domain_boundary(std::size_t n) const {
+    const Node_key& k = keys_[n];
+    return k.vertical ? (k.c == box_.u0 || k.c == box_.u1) : (k.c == box_.v0 || k.c == box_.v1);
+  }
+
+  // Glue the arcs along their nodes into chains between domain-boundary nodes, and cycles.
+  bool assemble(Curve_topology_in_box& out) {
+    out.box = box_;
+    std::vector<std::vector<std::size_t>> at(keys_.size());
+    for (std::size_t k = 0; k < arcs_.size(); ++k) {
+      at[arcs_[k].n0].push_back(k);
+      at[arcs_[k].n1].push_back(k);
+    }
+    for (std::size_t n = 0; n < keys_.size(); ++n) {
+      const std::size_t want = on_domain_boundary(n) ? 1 : 2;
+      if (at[n].size() != want) {
+        fail("inconsistent subdivision: a crossing joins " + std::to_string(at[n].size()) + " arcs");
+        return false;
+      }
+    }
+    std::vector<char> used(arcs_.size(), 0);
+    std::map<std::size_t, std::size_t> vid;
+    auto vertex = [&](std::size_t n) {
+      auto it = vid.find(n);
+      if (it != vid.end()) return it->second;
+      out.vertices.push_back(vertex_of(n));
+      return vid[n] = out.vertices.size() - 1;
+    };
+    // walk from node n along arc k; appends points; returns the node reached
+    auto walk = [&](std::size_t n, std::size_t k, std::vector<std::array<double, 2>>& poly) {
+      const Arc& a = arcs_[k];
+      used[k] = 1;
+      if (a.n0 == n) {
+        poly.insert(poly.end(), a.inner.begin(), a.inner.end());
+        return a.n1;
+      }
+      poly.insert(poly.end(), a.inner.rbegin(), a.inner.rend());
+      return a.n0;
+    };
+    auto point = [&](std::size_t n) {
+      const Curve_topology_vertex v = vertex_of(n);
+      return std::array<double, 2>{v.u, v.v};
+    };
+    auto chain = [&](std::size_t start, std::size_t k, bool stop_at_target, std::size_t target) {
+      Curve_topology_edge e;
+      e.source = vertex(start);
+      e.polyline.push_back(point(start));
+      std::size_t n = start;
+      for (;;) {
+        n = walk(n, k, e.polyline);
+        if (on_domain_boundary(n) || (stop_at_target && n == target)) break;
+        if (used[at[n][0]] && used[at[n][1]]) break;  // back at the start of a cycle
+        e.polyline.push_back(point(n));
+        k = used[at[n][0]] ? at[n][1] : at[n][0];
+      }
+      e.polyline.push_back(point(n));
+      e.target = vertex(n);
+      out.edges.push_back(e);
+      return n;
+    };
+    for (std::size_t n = 0; n < keys_.size(); ++n)
+      if (on_domain_boundary(n) && !used[at[n][0]]) chain(n, at[n][0], false, n);
+    for (std::size_t k = 0; k < arcs_.size(); ++k) {
+      if (used[k]) continue;
+      // a cycle: count its nodes, then split it into two edges at the start and half-way
+      std::vector<std::size_t> nodes;
+      std::size_t n = arcs_[k].n0, a = k;
+      std::vector<char> seen(arcs_.size(), 0);
+      for (;;) {
+        nodes.push_back(n);
+        seen[a] = 1;
+        n = arcs_[a].n0 == n ? arcs_[a].n1 : arcs_[a].n0;
+        const std::size_t next = at[n][0] == a ? at[n][1] : at[n][0];
+        if (seen[next]) break;
+        a = next;
+      }
+      const std::size_t start = arcs_[k].n0, half = nodes[nodes.size() / 2];
+      if (nodes.size() < 2) {  // a loop through one node only: cannot happen (two arcs meet at every node)
+        fail("inconsistent subdivision: a one-node cycle");
+        return false;
+      }
+      const std::size_t reached = chain(start, k, true, half);
+      const std::size_t k2 = used[at[reached][0]] ? at[reached][1] : at[reached][0];
+      chain(reached, k2, true, start);
+    }
+    // components and branch counts (union-find over the edges)
+    std::vector<std::size_t> parent(out.vertices.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
+      return parent[i] == i ? i : parent[i] = find(parent[i]);
+    };
+    for (const auto& e : out.edges) {
+      out.vertices[e.source].half_branches++;
+      out.vertices[e.target].half_branches++;
+      parent[find(e.source)] = find(e.target);
+    }
+    for (auto& v : out.vertices) v.branches = v.on_boundary ? v.half_branches : std::max(1, v.half_branches / 2);
+    std::map<std::size_t, std::size_t> comp;
+    for (std::size_t i = 0; i < out.edges.size(); ++i) {
+      const std::size_t r = find(out.edges[i].source);
+      auto it = comp.find(r);
+      if (it == comp.end()) {
+        it = comp.emplace(r, out.components.size()).first;
+        out.components.emplace_back();
+        out.components.back().closed = true;
+      }
+      out.components[it->second].edges.push_back(i);
+    }
+    for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+      auto it = comp.find(find(i));
+      if (it == comp.end()) continue;
+      out.components[it->second].vertices.push_back(i);
+      if (out.vertices[i].on_boundary) out.components[it->second].closed = false;
+    }
+    return true;
+  }
+
+  const Polynomial_2<Integer>& D_;
+  Parameter_box box_;
+  Subdivision_topology_options o_;
+  int a_ = 0, b_ = 0;
+  long bits_ = 0;
+  mpfr_prec_t prec_ = 256;
+  std::vector<long double> scaled_;
+  std::map<std::pair<bool, Rational>, Line> lines_;
+  std::map<Node_key, std::size_t> nodes_;
+  std::vector<Node_key> keys_;
+  std::vector<Arc> arcs_;
+  bool failed_ = false;
+  std::string failure_;
+};
+
+} // namespace internal
+
+/// \brief Certified topology of D(u,v) = 0 in `box` by Bernstein subdivision (see the header comment).
+/// `certified == false` (with `reason` and the unresolved boxes) when the curve has singular or isolated
+/// points, or tangencies with box lines, that the subdivision cannot resolve; the caller then needs an exact
+/// curve analysis (analyse_curve_in_box). Throws Invalid_input if D is zero or the box is empty.
+inline Subdivision_topology_result subdivide_curve_in_box(const Polynomial_2<Integer>& D, const Parameter_box& box,
+                                                         const Subdivision_topology_options& o = {}) {
+  if (CGAL::is_zero(D)) throw Invalid_input("subdivide_curve_in_box: the polynomial is identically zero");
+  if (!(box.u0 < box.u1) || !(box.v0 < box.v1)) throw Invalid_input("subdivide_curve_in_box: empty box");
+  return internal::Subdivision_topology(D, box, o).run();
+}
+
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
