@@ -404,6 +404,8 @@ class Arr_rational_bezier_traits_2 {
     // the nearest abscissa beyond p where something happens, as a point
     Point_2 bound = right ? (cmp_x(c1.right(), c2.right()) < 0 ? c1.right() : c2.right())
                           : (cmp_x(c1.left(), c2.left()) > 0 ? c1.left() : c2.left());
+    if (cmp_x(bound, p) * dir <= 0)
+      throw Invalid_input("Arr_rational_bezier_traits_2: compare_y_at_x_left/right: an arc is not defined there");
     auto consider = [&](const Point_2& q) {
       if (q.is_same(p)) return;
       const int side = cmp_x(q, p) * dir;
