@@ -9,10 +9,12 @@
 #include <CGAL/Cartesian.h>
 #include <CGAL/CORE_algebraic_number_traits.h>
 #include <CGAL/Arr_Bezier_curve_traits_2.h>
+#include <CGAL/Arr_conic_traits_2.h>
 
 #include <catch2/catch.hpp>
 
 #include <random>
+#include <sstream>
 #include <vector>
 
 using namespace bezoutian;
@@ -115,6 +117,64 @@ TEST_CASE("arrangement traits: curves meeting at end points", "[arrangement]") {
   check({arch, poly({{-1, 1}, {3, 1}})}, 5, 4, 1);
   // closing the arch with its chord: one bounded face
   check({arch, poly({{0, 0}, {2, 0}})}, 2, 2, 2);
+}
+
+namespace {
+// The same circles, as the same four quarter arcs (counterclockwise between the rational points centre + r e_k),
+// in an arrangement of CGAL's Arr_conic_traits_2 (CORE number types).
+struct Circle {
+  Rational cx, cy, r;
+};
+Counts conic_counts(const std::vector<Circle>& circles) {
+  using Nt = CGAL::CORE_algebraic_number_traits;
+  using K = CGAL::Cartesian<Nt::Rational>;
+  using Conic_traits = CGAL::Arr_conic_traits_2<K, CGAL::Cartesian<Nt::Algebraic>, Nt>;
+  auto q = [](const Rational& v) {
+    std::ostringstream o;
+    o << v;
+    return Nt::Rational(o.str());
+  };
+  std::vector<Conic_traits::Curve_2> arcs;
+  for (const Circle& c : circles) {
+    const K::Circle_2 circ(K::Point_2(q(c.cx), q(c.cy)), q(c.r * c.r));
+    const Rational dx[4] = {1, 0, -1, 0}, dy[4] = {0, 1, 0, -1};
+    for (int k = 0; k < 4; ++k) {
+      const Conic_traits::Point_2 s(Nt::Algebraic(q(c.cx + c.r * dx[k])), Nt::Algebraic(q(c.cy + c.r * dy[k])));
+      const Conic_traits::Point_2 t(Nt::Algebraic(q(c.cx + c.r * dx[(k + 1) % 4])),
+                                    Nt::Algebraic(q(c.cy + c.r * dy[(k + 1) % 4])));
+      arcs.push_back(Conic_traits::Curve_2(circ, CGAL::COUNTERCLOCKWISE, s, t));
+    }
+  }
+  Conic_traits tr;
+  CGAL::Arrangement_2<Conic_traits> arr(&tr);
+  CGAL::insert(arr, arcs.begin(), arcs.end());
+  return {arr.number_of_vertices(), arr.number_of_edges(), arr.number_of_faces(), arr.number_of_isolated_vertices(),
+          arr.is_valid()};
+}
+
+void check_circles(const std::vector<Circle>& circles, std::size_t v, std::size_t e, std::size_t f) {
+  std::vector<Curve> cs;
+  for (const Circle& c : circles)
+    for (const Curve& a : circle(c.cx, c.cy, c.r)) cs.push_back(a);
+  check(cs, v, e, f);
+  const Counts k = conic_counts(circles);
+  CHECK(k.valid);
+  CHECK(k.v == v);
+  CHECK(k.e == e);
+  CHECK(k.f == f);
+}
+}  // namespace
+
+TEST_CASE("arrangement traits: circles, compared with CGAL's conic traits", "[arrangement][cgal]") {
+  check_circles({{0, 0, 1}}, 4, 4, 2);
+  check_circles({{0, 0, 1}, {1, 0, 1}}, 10, 12, 4);
+  check_circles({{0, 0, 1}, {3, 0, 2}}, 7, 8, 3);
+  check_circles({{0, 0, 1}, {1, 0, 2}}, 7, 8, 3);
+  // Three circles crossing pairwise (2 points each, none shared) and a small one inside the lens of the first two,
+  // crossing only the third one (centre distance 2/3 between 3/4 - 1/5 and 3/4 + 1/5): V = 16 arc ends + 8
+  // crossings, each crossing splits one arc of each circle: E = 16 + 16, one component: F = 2 - V + E.
+  check_circles({{0, 0, 1}, {1, 0, 1}, {Rational(1, 2), Rational(2, 3), Rational(3, 4)}, {Rational(1, 2), 0, Rational(1, 5)}},
+                24, 32, 10);
 }
 
 TEST_CASE("arrangement traits: circles as rational quadratic arcs", "[arrangement]") {
