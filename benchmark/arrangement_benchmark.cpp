@@ -4,7 +4,8 @@
 // own and a crash of one traits class is reported instead of ending the benchmark.
 //   arrangement_benchmark [SETS="3:20,3:40,5:20,tangent:40"] [SEED=1] [FILE.dat ...]
 // SETS lists degree:count pairs, and tangent:N for N tangency stress cases (a random cubic and its mirror image
-// across its tangent line at a rational parameter, each pair its own arrangement); files are CGAL Bezier .dat
+// across its tangent line at a rational parameter, each pair its own arrangement), grid:N for N degenerate sets
+// (10 cubics with control points on the grid [0,6)^2: shared end points, overlaps, tangencies); files are CGAL Bezier .dat
 // files (e.g. CGAL's Bezier example data, examples/Arrangement_on_surface_2/Bezier.dat in libcgal-demo).
 #include <bezoutian/Arr_rational_bezier_traits_2.h>
 #include <bezoutian/io/Geometry_document.h>
@@ -132,13 +133,13 @@ std::string run_cgal(const std::vector<Net>& nets) {
   return summary(arr, ms);
 }
 
-std::vector<Net> random_nets(unsigned seed, int n, int degree) {
+std::vector<Net> random_nets(unsigned seed, int n, int degree, unsigned range = 1000) {
   std::mt19937 g(seed);
   std::vector<Net> nets;
   for (int i = 0; i < n; ++i) {
     Net net;
     for (int j = 0; j <= degree; ++j) {
-      const long x = long(g() % 1000), y = long(g() % 1000);
+      const long x = long(g() % range), y = long(g() % range);
       net.push_back({bezoutian::Rational(x), bezoutian::Rational(y)});
     }
     nets.push_back(net);
@@ -224,6 +225,11 @@ int main(int argc, char** argv) {
   std::string item;
   while (std::getline(in, item, ',')) {
     const auto c = item.find(':');
+    if (item.substr(0, c) == "grid") {  // degenerate inputs: 10 cubics on the grid [0,6)^2, N seeds
+      for (int k = 0; k < std::atoi(item.substr(c + 1).c_str()); ++k)
+        report("grid cubics s" + std::to_string(seed + k), random_nets(seed + k, 10, 3, 6));
+      continue;
+    }
     if (item.substr(0, c) == "tangent") {
       tangent_stress(seed, std::atoi(item.substr(c + 1).c_str()));
       continue;

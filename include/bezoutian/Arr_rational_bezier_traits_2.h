@@ -250,6 +250,10 @@ class Arr_rational_bezier_traits_2 {
       const auto& A = swap ? b : a;
       const auto& B = swap ? a : b;
       Curve_intersection_result r;
+      if (A == B && A->linear) {  // an arc of a line segment has no self-intersection
+        it = cache_->pairs.emplace(key, Pair_entry()).first;
+        return it->second;
+      }
       try {
         r = A == B ? self_intersections(A->curve) : intersect_curves(A->curve, B->curve);
       } catch (const Invalid_input&) {
@@ -488,12 +492,31 @@ class Arr_rational_bezier_traits_2 {
     template <class OutputIterator>
     OutputIterator operator()(const Curve_2& c, OutputIterator oi) const {
       using Result = boost::variant<Point_2, X_monotone_curve_2>;
-      const auto s = internal::make_supporting_curve(c);
-      const Ci_poly1& d = s->speed[s->vertical ? 1 : 0];
+      auto s = internal::make_supporting_curve(c);
+      const int k = s->vertical ? 1 : 0;
       std::vector<Algebraic_real> ts{Algebraic_real(0)};
-      for (const Isolated_root& r : isolate_real_roots(d, Rational(0), Rational(1)))
+      for (const Isolated_root& r : isolate_real_roots(s->speed[k], Rational(0), Rational(1)))
         if (r.root > 0 && r.root < 1) ts.push_back(r.root);
       ts.push_back(Algebraic_real(1));
+      if (s->linear && ts.size() > 2) {
+        // A segment traversed back and forth: its image is the segment L between its extreme control points
+        // (convex hull property). The arcs are the pieces of L between the sorted positions of C(0), C(1) and
+        // the turning points (the same vertices as overlapping pieces of C would give), u = (v - m) / d.
+        const auto p = c.control_points();
+        std::size_t imin = 0, imax = 0;
+        for (std::size_t i = 1; i < p.size(); ++i) {
+          if (p[i][k] < p[imin][k]) imin = i;
+          if (p[i][k] > p[imax][k]) imax = i;
+        }
+        const Rational m = p[imin][k], d = p[imax][k] - p[imin][k];
+        auto L = internal::make_supporting_curve(Curve_2(std::vector<typename Curve_2::Point>{p[imin], p[imax]}));
+        std::vector<Algebraic_real> us;
+        for (const auto& t : ts) us.push_back(internal::arr_affine(Point_2(s, t).coordinate(k), m, d));
+        std::sort(us.begin(), us.end());
+        us.erase(std::unique(us.begin(), us.end()), us.end());
+        s = L;
+        ts = us;
+      }
       std::vector<Point_2> ps;
       for (const auto& t : ts) ps.push_back(Point_2(s, t));
       for (std::size_t i = 0; i + 1 < ts.size(); ++i) *oi++ = Result(make_arc(s, ts[i], ts[i + 1], ps[i], ps[i + 1]));

@@ -31,6 +31,7 @@ struct Arr_bezier_supporting_curve {
   std::array<Ci_poly1, 2> num, den;  // x = num[0]/den[0], y = num[1]/den[1]
   std::array<Ci_poly1, 2> speed;     // X_k' W - X_k W' (numerators of the derivatives of x and y)
   bool vertical = false;             // x constant
+  bool linear = false;               // the image lies on a line (collinear control points)
 };
 
 inline Ci_poly1 arr_primitive(const Ci_poly1& f) {
@@ -60,7 +61,25 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   if (CGAL::is_zero(s->speed[0]) && CGAL::is_zero(s->speed[1]))
     throw Invalid_input("Arr_rational_bezier_traits_2: the curve is a single point");
   s->vertical = CGAL::is_zero(s->speed[0]);
+  // Collinear control points <=> the image lies on a line (a X + b Y + c W = 0 holds coefficientwise).
+  const auto p = c.control_points();
+  std::size_t j = 1;
+  while (j < p.size() && p[j] == p[0]) ++j;
+  s->linear = true;
+  for (std::size_t i = 1; i < p.size() && j < p.size(); ++i)
+    if ((p[i][0] - p[0][0]) * (p[j][1] - p[0][1]) != (p[i][1] - p[0][1]) * (p[j][0] - p[0][0])) s->linear = false;
   return s;
+}
+
+/// The number (v - m) / d (d > 0): the root of q(m + d u) in the image of v's isolating interval.
+inline Algebraic_real arr_affine(const Algebraic_real& v, const Rational& m, const Rational& d) {
+  if (v.is_rational()) return Algebraic_real((v.rational_value() - m) / d);
+  const Ci_poly1 q = v.polynomial();
+  const Rational lo = v.lower(), hi = v.upper();
+  const Polynomial_1<Rational> lin(m, d);
+  Polynomial_1<Rational> r(0);
+  for (int i = q.degree(); i >= 0; --i) r = r * lin + Polynomial_1<Rational>(Rational(q[i]));
+  return Algebraic_real(r, (lo - m) / d, (hi - m) / d);
 }
 
 /// Exact rational value f(q).
