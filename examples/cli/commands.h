@@ -28,7 +28,7 @@ namespace bezoutian_cli {
 /// Options shared by `bezoutian intersect` for curves and patches.
 struct Intersect_options {
   std::string file_a, file_b;
-  std::string method = "default";   // curves: projection | resolvent | groebner | default
+  std::string method = "default";   // curves: default | subresultant | projection | resolvent | groebner
   std::string box;                  // patches: u0,u1,v0,v1 region of interest
   std::string svg, obj;             // patches: pictures
   double tolerance = 1e-9;          // patches: precision of traced ordinates

@@ -14,8 +14,8 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
                                  "Certified intersection of two curves, a curve and a patch, or two patches");
   sub->add_option("FILE_A", o->file_a, "first object (the first curve or patch of the file)")->required();
   sub->add_option("FILE_B", o->file_b, "second object (default: the second object of FILE_A)");
-  sub->add_option("--method", o->method, "curves: projection | resolvent | groebner | default")
-      ->check(CLI::IsMember({"projection", "resolvent", "groebner", "default"}));
+  sub->add_option("--method", o->method, "curves: default | subresultant | projection | resolvent | groebner")
+      ->check(CLI::IsMember({"default", "subresultant", "projection", "resolvent", "groebner"}));
   sub->add_option("--box", o->box, "patches: region of interest u0,u1,v0,v1 of the (u,t) projection");
   sub->add_option("--svg", o->svg, "patches: write a picture of the parameter-space curves");
   sub->add_option("--obj", o->obj, "patches: write the patches and the 3D curves as OBJ");

@@ -6,6 +6,7 @@
 #include <bezoutian/Bezout_matrix.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/Goldman_resolvent.h>
+#include <bezoutian/Groebner_bivariate.h>
 #include <bezoutian/Polynomial_matrix_determinant.h>
 #include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Root_isolation.h>
@@ -47,8 +48,10 @@ enum class Curve_intersection_method {
   subresultant,    ///< R = Res_t(F1,F2), T = Res_s(F1,F2) with the subresultant sequence (3D: a combination with F3)
   projection,      ///< R = f2(X1,Y1,W1): implicit equation of curve 2 (bezout_implicit_equation, du-1989 eq. 4.1)
                    ///< on curve 1, and symmetrically T (planar curves; space curves use the default)
-  resolvent        ///< space curves with a curve of degree <= 3: R = gcd of Goldman's quadrics (du-1989 eq. 4.2/4.3)
+  resolvent,       ///< space curves with a curve of degree <= 3: R = gcd of Goldman's quadrics (du-1989 eq. 4.2/4.3)
                    ///< of that curve evaluated on the other one; otherwise as projection
+  groebner         ///< R = generator of <F_1, .., F_D> ∩ Q[s] from a reduced lexicographic Groebner basis (t > s),
+                   ///< T likewise with s > t (Groebner_bivariate.h); slow beyond small degrees (step budget: Error)
 };
 
 /// Kind of an isolated intersection.
@@ -260,6 +263,12 @@ class Curve_intersection_engine {
   // R(s) from the strategy (default: the resultant already computed).
   P1 strategy_R(const Elimination& e, const Form& A, const Form& B) const {
     if (plain_method()) return e.R;
+    if (method_ == Curve_intersection_method::groebner) {
+      // the pair's ideal (in space the gcd with the other pairs' resultants follows in solve_system)
+      const Polynomial_1<Rational> g = groebner_eliminant(std::vector<P2>{e.G1, e.G2});
+      if (!CGAL::is_zero(g)) return internal::integer_multiple(g);
+      return e.R;
+    }
     if (method_ == Curve_intersection_method::resolvent && D == 3 && B[0].degree() <= 3 && max_degree(B) <= 3 &&
         max_degree(B) == 3) {
       const auto r = goldman_rational_cubic_resolvent(B[1], B[2], B[D == 3 ? 3 : 1], B[0]);
@@ -1106,13 +1115,13 @@ struct Intersect_curves {
   }
 };
 
-/// Parses "default", "projection", "resolvent"; "groebner" is not implemented (Invalid_input).
+/// Parses "default", "subresultant", "projection", "resolvent", "groebner".
 inline Curve_intersection_method curve_intersection_method_from_string(const std::string& s) {
   if (s == "default") return Curve_intersection_method::default_method;
   if (s == "subresultant") return Curve_intersection_method::subresultant;
   if (s == "projection") return Curve_intersection_method::projection;
   if (s == "resolvent") return Curve_intersection_method::resolvent;
-  if (s == "groebner") throw Invalid_input("the groebner curve intersection method is not implemented");
+  if (s == "groebner") return Curve_intersection_method::groebner;
   throw Invalid_input("unknown curve intersection method '" + s + "'");
 }
 
