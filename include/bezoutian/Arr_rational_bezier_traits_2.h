@@ -492,6 +492,18 @@ class Arr_rational_bezier_traits_2 {
     template <class OutputIterator>
     OutputIterator operator()(const Curve_2& c, OutputIterator oi) const {
       using Result = boost::variant<Point_2, X_monotone_curve_2>;
+      // With positive weights the curve is a single point iff all control points coincide: an isolated point.
+      bool point = true;
+      for (std::size_t i = 1; i < c.number_of_control_points(); ++i)
+        if (c.control_point(i) != c.control_point(0)) point = false;
+      if (point) {
+        for (std::size_t i = 0; i < c.number_of_control_points(); ++i)
+          if (!(c.weight(i) > Rational(0)))
+            throw Invalid_input("Arr_rational_bezier_traits_2: every weight must be positive (no poles on [0,1])");
+        const auto q = c.control_point(0);
+        *oi++ = Result(Point_2(q[0], q[1]));
+        return oi;
+      }
       auto s = internal::make_supporting_curve(c);
       const int k = s->vertical ? 1 : 0;
       std::vector<Algebraic_real> ts{Algebraic_real(0)};

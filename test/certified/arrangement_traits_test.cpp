@@ -310,8 +310,24 @@ TEST_CASE("arrangement traits: invalid input is rejected", "[arrangement]") {
   Arr arr(&tr);
   const Curve neg({Pt{0, 0}, Pt{1, 1}, Pt{2, 0}}, {Rational(1), Rational(-1), Rational(1)});
   CHECK_THROWS_AS(CGAL::insert(arr, neg), Invalid_input);
-  const Curve point({Pt{1, 1}, Pt{1, 1}});
-  CHECK_THROWS_AS(CGAL::insert(arr, point), Invalid_input);
+}
+
+TEST_CASE("arrangement traits: a curve reduced to a point is an isolated vertex", "[arrangement]") {
+  // inside the arch (0,0),(1,2),(2,0) closed by its chord, and one on the chord itself
+  const Curve arch = poly({{0, 0}, {1, 2}, {2, 0}}), chord = poly({{0, 0}, {2, 0}});
+  const Curve inside({Pt{1, Rational(1, 2)}, Pt{1, Rational(1, 2)}, Pt{1, Rational(1, 2)}});
+  const Counts c = counts_of({arch, chord, inside});
+  CHECK(c.valid);
+  CHECK(c.v == 3);
+  CHECK(c.iso == 1);
+  CHECK(c.e == 2);
+  CHECK(c.f == 2);
+  const Counts d = counts_of({arch, chord, poly({{1, 0}, {1, 0}})});
+  CHECK(d.valid);
+  CHECK(d.v == 3);  // the point splits the chord
+  CHECK(d.iso == 0);
+  CHECK(d.e == 3);
+  CHECK(d.f == 2);
 }
 
 namespace {
