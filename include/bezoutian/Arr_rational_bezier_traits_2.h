@@ -148,11 +148,11 @@ class Arr_bezier_x_monotone_curve_2 {
 
   Arr_bezier_x_monotone_curve_2() = default;
   /// The arc of s on [t0, t1] with the given end points; `increasing` says whether x (y for vertical arcs)
-  /// increases with the parameter; `directed_right` whether the arc is directed from its lexicographically
-  /// smaller end (Construct_opposite_2 flips it).
+  /// increases with the parameter. The arc is directed like the parameter (source at t0);
+  /// Construct_opposite_2 flips the direction.
   Arr_bezier_x_monotone_curve_2(std::shared_ptr<const Supporting> s, const Algebraic_real& t0, const Algebraic_real& t1,
                                 const Point_2& p0, const Point_2& p1, bool increasing)
-      : s_(std::move(s)), t0_(t0), t1_(t1), p0_(p0), p1_(p1), increasing_(increasing), directed_right_(true) {}
+      : s_(std::move(s)), t0_(t0), t1_(t1), p0_(p0), p1_(p1), increasing_(increasing), directed_right_(increasing) {}
 
   const std::shared_ptr<const Supporting>& supporting() const { return s_; }
   const Rational_bezier_curve_2<Rational>& supporting_curve() const { return s_->curve; }
@@ -163,6 +163,8 @@ class Arr_bezier_x_monotone_curve_2 {
   bool is_vertical() const { return s_->vertical; }
   bool is_increasing() const { return increasing_; }
   bool is_directed_right() const { return directed_right_; }
+  /// True if the direction is that of increasing parameter.
+  bool follows_parameter() const { return directed_right_ == increasing_; }
   /// Lexicographically smallest / largest end.
   const Point_2& left() const { return increasing_ ? p0_ : p1_; }
   const Point_2& right() const { return increasing_ ? p1_ : p0_; }
@@ -544,7 +546,7 @@ class Arr_rational_bezier_traits_2 {
       const Algebraic_real t = parameter_of(c, p);
       X_monotone_curve_2 a = make_arc(c.supporting(), c.parameter_min(), t, c.point_at_min_parameter(), p);
       X_monotone_curve_2 b = make_arc(c.supporting(), t, c.parameter_max(), p, c.point_at_max_parameter());
-      if (!c.is_directed_right()) {
+      if (!c.follows_parameter()) {
         a = a.opposite();
         b = b.opposite();
       }
@@ -682,7 +684,7 @@ class Arr_rational_bezier_traits_2 {
    public:
     bool operator()(const X_monotone_curve_2& a, const X_monotone_curve_2& b) const {
       if (a.supporting() != b.supporting() || a.is_increasing() != b.is_increasing()) return false;
-      if (a.is_directed_right() != b.is_directed_right()) return false;
+      if (a.follows_parameter() != b.follows_parameter()) return false;
       return a.parameter_max() == b.parameter_min() || b.parameter_max() == a.parameter_min();
     }
   };
@@ -694,7 +696,7 @@ class Arr_rational_bezier_traits_2 {
       const X_monotone_curve_2& g = a.parameter_max() == b.parameter_min() ? b : a;
       c = X_monotone_curve_2(f.supporting(), f.parameter_min(), g.parameter_max(), f.point_at_min_parameter(),
                              g.point_at_max_parameter(), f.is_increasing());
-      if (!a.is_directed_right()) c = c.opposite();
+      if (!f.follows_parameter()) c = c.opposite();
     }
   };
 

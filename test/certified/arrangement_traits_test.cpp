@@ -10,9 +10,13 @@
 #include <CGAL/CORE_algebraic_number_traits.h>
 #include <CGAL/Arr_Bezier_curve_traits_2.h>
 #include <CGAL/Arr_conic_traits_2.h>
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/General_polygon_set_2.h>
+#include <CGAL/Gps_traits_2.h>
 
 #include <catch2/catch.hpp>
 
+#include <list>
 #include <random>
 #include <sstream>
 #include <vector>
@@ -390,4 +394,47 @@ TEST_CASE("arrangement traits: same V/E/F as CGAL's Bezier traits on random cubi
     CHECK(b.e == a.e);
     CHECK(b.f == a.f);
   }
+}
+
+TEST_CASE("arrangement traits: Boolean operations on discs bounded by rational arcs", "[arrangement][gps]") {
+  using Gps_traits = CGAL::Gps_traits_2<Traits>;
+  using Polygon = Gps_traits::Polygon_2;
+  using Pwh = Gps_traits::Polygon_with_holes_2;
+  Traits tr;
+  auto disc = [&](const Rational& cx, const Rational& cy, const Rational& r) {
+    std::vector<Traits::X_monotone_curve_2> xs;
+    for (const Curve& c : circle(cx, cy, r)) {
+      std::vector<boost::variant<Traits::Point_2, Traits::X_monotone_curve_2>> out;
+      tr.make_x_monotone_2_object()(c, std::back_inserter(out));
+      for (const auto& o : out) xs.push_back(boost::get<Traits::X_monotone_curve_2>(o));
+    }
+    return Polygon(xs.begin(), xs.end());
+  };
+  const Polygon a = disc(0, 0, 1), b = disc(1, 0, 1), small = disc(Rational(1, 2), 0, Rational(1, 5));
+  CHECK(a.size() == 4);
+  CHECK(a.orientation() == CGAL::COUNTERCLOCKWISE);
+  // The lens: an arc of each circle between (1/2, +-sqrt 3/2), each split at the quarter point (1,0) resp. (0,0).
+  std::list<Pwh> r;
+  CGAL::intersection(a, b, std::back_inserter(r));
+  REQUIRE(r.size() == 1);
+  CHECK(r.front().outer_boundary().size() == 4);
+  CHECK(r.front().number_of_holes() == 0);
+  // The union: the other 3 quarter points of each circle remain vertices: 4 + 4 arcs.
+  Pwh u;
+  CHECK(CGAL::join(a, b, u));
+  CHECK(u.outer_boundary().size() == 8);
+  CHECK(u.number_of_holes() == 0);
+  // a - b: 4 arcs of a and the 2 arcs of b inside a.
+  r.clear();
+  CGAL::difference(a, b, std::back_inserter(r));
+  REQUIRE(r.size() == 1);
+  CHECK(r.front().outer_boundary().size() == 6);
+  // a minus a small disc inside: one hole of 4 arcs.
+  r.clear();
+  CGAL::difference(a, small, std::back_inserter(r));
+  REQUIRE(r.size() == 1);
+  CHECK(r.front().number_of_holes() == 1);
+  CHECK(r.front().holes_begin()->size() == 4);
+  CHECK(CGAL::do_intersect(a, b));
+  CHECK(!CGAL::do_intersect(small, disc(3, 0, 1)));
 }
