@@ -22,8 +22,8 @@
 //    dyadic lines such as u = 1/2 or on the diagonal; the split lines and grid vertices avoid them).
 // The arcs glue along the exact crossings into the components. The result is certified when every sub-box is
 // excluded or simple: the curve has then no singular point in the box (near a singular or isolated point
-// neither derivative keeps a sign, and the subdivision stops at `max_depth` with `certified == false`, naming
-// the unresolved boxes). Arc sample points are floating-point (bisection on a vertical/horizontal segment where
+// neither derivative keeps a sign, and the subdivision stops at the first box that reaches `max_depth`, with
+// `certified == false`, naming that box). Arc sample points are floating-point (bisection on a vertical/horizontal segment where
 // the exact analysis proved exactly one crossing); vertex enclosures are exact isolating intervals.
 #ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 #define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
@@ -51,8 +51,9 @@ namespace bezoutian {
 
 /// Limits of subdivide_curve_in_box().
 struct Subdivision_topology_options {
-  int max_depth = 36;              ///< deepest split level (boxes of width about 0.5^36 of the domain)
-  std::size_t max_boxes = 400000;  ///< total number of boxes examined
+  int max_depth = 30;             ///< deepest split level (boxes of width about 0.5^30 of the domain); the first box
+                                  ///< still unresolved there ends the computation (not certified)
+  std::size_t max_boxes = 20000;  ///< total number of boxes examined
   int samples_per_arc = 6;         ///< floating-point sample points per arc piece inside one leaf box
 };
 
@@ -60,7 +61,7 @@ struct Subdivision_topology_options {
 struct Subdivision_topology_result {
   bool certified = false;                 ///< the topology below is proved
   Curve_topology_in_box topology;         ///< meaningful only if certified
-  std::vector<Parameter_box> unresolved;  ///< boxes that were neither excluded nor simple at max_depth
+  std::vector<Parameter_box> unresolved;  ///< the box that was neither excluded nor simple at max_depth
   std::size_t boxes = 0;                  ///< boxes examined
   std::string reason;                     ///< why not certified
 };
@@ -148,17 +149,14 @@ class Subdivision_topology {
         res.reason = failure_;
         return res;
       }
-      if (B.depth >= o_.max_depth) {
+      if (B.depth >= o_.max_depth) {  // one unresolved box already rules out a certificate: stop here
         res.unresolved.push_back(Parameter_box{B.u0, B.u1, B.v0, B.v1});
-        continue;
+        res.reason = "a box near (" + std::to_string(CGAL::to_double(B.u0)) + ", " +
+                     std::to_string(CGAL::to_double(B.v0)) + ") was neither excluded nor simple at depth " +
+                     std::to_string(o_.max_depth) + " (a singular, isolated or tangential point)";
+        return res;
       }
       split(B, stack);
-    }
-    if (!res.unresolved.empty()) {
-      res.reason = std::to_string(res.unresolved.size()) +
-                   " boxes near singular, isolated or tangential points were not resolved at depth " +
-                   std::to_string(o_.max_depth);
-      return res;
     }
     if (!assemble(res.topology)) {
       res.reason = failure_;
