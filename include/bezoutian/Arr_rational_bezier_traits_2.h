@@ -20,6 +20,7 @@
 #include <boost/variant.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -90,11 +91,34 @@ class Arr_bezier_point_2 {
       internal::arr_refine(o.second);
     }
   }
+  /// A double interval containing coordinate k, computed once (false if none is available yet).
+  bool enclose_double(int k, double& lo, double& hi) const {
+    Rep& r = *rep_;
+    if (!r.dvalid[k]) {
+      if (r.known[k]) {
+        r.dlo[k] = CGAL::to_interval(r.c[k].lower()).first;
+        r.dhi[k] = CGAL::to_interval(r.c[k].upper()).second;
+      } else {
+        const Origin& o = r.origins.front();
+        if (!o.second.is_rational() && CGAL::to_double(o.second.upper() - o.second.lower()) > 1e-12)
+          o.second.refine_to_width(Rational(std::ldexp(1.0, -42)));  // parameters lie in [0, 1]
+        if (!internal::arr_enclose_quotient_double(o.first->num[k], o.first->den[k], o.second.lower(), o.second.upper(),
+                                                   r.dlo[k], r.dhi[k]))
+          return false;
+      }
+      r.dvalid[k] = true;
+    }
+    lo = r.dlo[k];
+    hi = r.dhi[k];
+    return true;
+  }
+
   /// Shrinks the enclosures.
   void refine(int k) const {
     Rep& r = *rep_;
     if (r.known[k]) internal::arr_refine(r.c[k]);
     else internal::arr_refine(r.origins.front().second);
+    r.dvalid[k] = false;
   }
 
   /// Double approximations (nearest doubles).
@@ -112,6 +136,11 @@ class Arr_bezier_point_2 {
   /// Exact sign of coordinate k of p minus that of q: enclosures first, exact numbers if they do not separate.
   friend int compare_coordinate(const Arr_bezier_point_2& p, const Arr_bezier_point_2& q, int k) {
     if (p.rep_ == q.rep_) return 0;
+    double a0, b0, c0, d0;
+    if (p.enclose_double(k, a0, b0) && q.enclose_double(k, c0, d0)) {
+      if (b0 < c0) return -1;
+      if (d0 < a0) return 1;
+    }
     for (int round = 0; round < 3; ++round) {
       Rational a, b, c, d;
       p.enclose(k, a, b);
@@ -133,6 +162,8 @@ class Arr_bezier_point_2 {
   struct Rep {
     Algebraic_real c[2];
     bool known[2] = {false, false};
+    double dlo[2], dhi[2];  // cached double enclosures
+    bool dvalid[2] = {false, false};
     std::vector<Origin> origins;
   };
   std::shared_ptr<Rep> rep_;

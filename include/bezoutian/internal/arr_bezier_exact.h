@@ -112,6 +112,27 @@ inline std::pair<Rational, Rational> arr_enclose(const Ci_poly1& f, const Ration
   return {lo, hi};
 }
 
+/// Double enclosure of N/D on [a, b] (outward-rounded interval arithmetic on the double interval containing
+/// [a, b]); false if D's enclosure contains 0 or overflows.
+inline bool arr_enclose_quotient_double(const Ci_poly1& N, const Ci_poly1& D, const Rational& a, const Rational& b,
+                                        double& lo, double& hi) {
+  typedef CGAL::Interval_nt<false> I;
+  typename I::Protector guard;
+  const I x(CGAL::to_interval(a).first, CGAL::to_interval(b).second);
+  auto ev = [&](const Ci_poly1& f) {
+    I v(CGAL::to_interval(f[f.degree()]));
+    for (int i = f.degree() - 1; i >= 0; --i) v = v * x + I(CGAL::to_interval(f[i]));
+    return v;
+  };
+  const I n = ev(N), d = ev(D);
+  if (!(d.inf() > 0) && !(d.sup() < 0)) return false;
+  const I q = n / d;
+  if (!std::isfinite(q.inf()) || !std::isfinite(q.sup())) return false;
+  lo = q.inf();
+  hi = q.sup();
+  return true;
+}
+
 /// Enclosure of N/D on the isolating interval of t, or false if D's enclosure contains 0.
 inline bool arr_enclose_quotient(const Ci_poly1& N, const Ci_poly1& D, const Rational& a, const Rational& b,
                                  Rational& lo, Rational& hi) {
