@@ -283,7 +283,10 @@ class Arr_rational_bezier_traits_2 {
       const auto& A = swap ? b : a;
       const auto& B = swap ? a : b;
       Curve_intersection_result r;
-      if (A == B && A->linear) {  // an arc of a line segment has no self-intersection
+      // With positive weights each curve lies in the box of its control points (convex hull property).
+      const bool disjoint = A != B && (A->box[1] < B->box[0] || B->box[1] < A->box[0] || A->box[3] < B->box[2] ||
+                                       B->box[3] < A->box[2]);
+      if (disjoint || (A == B && A->linear)) {  // (an arc of a line segment has no self-intersection)
         it = cache_->pairs.emplace(key, Pair_entry()).first;
         return it->second;
       }

@@ -32,6 +32,7 @@ struct Arr_bezier_supporting_curve {
   std::array<Ci_poly1, 2> speed;     // X_k' W - X_k W' (numerators of the derivatives of x and y)
   bool vertical = false;             // x constant
   bool linear = false;               // the image lies on a line (collinear control points)
+  std::array<Rational, 4> box;       // xmin, xmax, ymin, ymax of the control points (encloses the curve)
 };
 
 inline Ci_poly1 arr_primitive(const Ci_poly1& f) {
@@ -63,6 +64,13 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   s->vertical = CGAL::is_zero(s->speed[0]);
   // Collinear control points <=> the image lies on a line (a X + b Y + c W = 0 holds coefficientwise).
   const auto p = c.control_points();
+  s->box = {p[0][0], p[0][0], p[0][1], p[0][1]};
+  for (const auto& q : p) {
+    s->box[0] = std::min(s->box[0], q[0]);
+    s->box[1] = std::max(s->box[1], q[0]);
+    s->box[2] = std::min(s->box[2], q[1]);
+    s->box[3] = std::max(s->box[3], q[1]);
+  }
   std::size_t j = 1;
   while (j < p.size() && p[j] == p[0]) ++j;
   s->linear = true;
