@@ -32,7 +32,8 @@ struct Intersect_options {
   std::string box;                  // patches: u0,u1,v0,v1 region of interest
   std::string svg, obj;             // patches: pictures
   double tolerance = 1e-9;          // patches: precision of traced ordinates
-  int max_degree = 16;              // patches: largest total degree of D for the certified topology
+  int max_degree = 16;              // patches: largest total degree of D for CGAL's curve analysis
+  std::string patches;              // patches: "I,J" indices (0-based) of the patches to use (default 0,1 / 0)
   bool json = false;
 };
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -60,6 +61,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                    {"terms", terms}};
   const auto& T = L.topology;
   j["topology_computed"] = L.topology_computed;
+  if (L.topology_computed) j["topology_method"] = L.topology_method.empty() ? "empty locus" : L.topology_method;
   if (!L.note.empty()) j["note"] = L.note;
   j["box"] = {CGAL::to_double(T.box.u0), CGAL::to_double(T.box.u1), CGAL::to_double(T.box.v0), CGAL::to_double(T.box.v1)};
   json comps = json::array();
@@ -99,6 +101,16 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   }
   j["singular_points"] = sing;
   j["boundary_points"] = bnd;
+  if (!L.self_intersection) {
+    json contacts = json::array();
+    for (const auto& c : L.contacts)
+      contacts.push_back({{"kind", c.shared_curve ? "shared_boundary" : "point"},
+                          {"sides", {c.side_first, c.side_second}},
+                          {"first", {c.first_0.to_decimal_string(17), c.first_1.to_decimal_string(17)}},
+                          {"second", {c.second_0.to_decimal_string(17), c.second_1.to_decimal_string(17)}},
+                          {"point", {c.point[0], c.point[1], c.point[2]}}});
+    j["contacts"] = contacts;
+  }
   j["partner_variables"] = L.self_intersection ? json{"l", "k"} : json{"v", "s"};
   j["lifting"] = "floating point along certified arcs (see doc/surface_intersection.md)";
   j["seconds"] = seconds;
@@ -194,13 +206,26 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
             << e.matrix.size() << " x " << e.matrix.size() << ", D(" << e.variables[0] << "," << e.variables[1]
             << ") of bi-degree (" << e.degree(0) << ", " << e.degree(1) << "), total degree " << e.total_degree()
             << ", " << e.terms().size() << " terms\n";
+  static const char* side_name[4] = {"v=0", "u=1", "v=1", "u=0"};
+  for (const auto& c : L.contacts) {
+    std::cout << "contact: " << (c.shared_curve ? "shared boundary curve" : "boundary point") << ", side "
+              << side_name[c.side_first] << " of the first patch";
+    if (c.shared_curve)
+      std::cout << " [" << c.first_0.to_double() << ", " << c.first_1.to_double() << "] = side "
+                << side_name[c.side_second] << " of the second [" << c.second_0.to_double() << ", "
+                << c.second_1.to_double() << "]\n";
+    else
+      std::cout << " at " << c.first_0.to_double() << " = side " << side_name[c.side_second] << " of the second at "
+                << c.second_0.to_double() << "\n";
+  }
   const auto& T = L.topology;
   if (!L.topology_computed) {
     std::cout << "note: " << L.note << "\n";
     return;
   }
   std::cout << "certified topology in [" << T.box.u0 << ", " << T.box.u1 << "] x [" << T.box.v0 << ", " << T.box.v1
-            << "]: " << T.components.size() << " component(s), " << T.number_of_singular_points()
+            << "] (" << (L.topology_method.empty() ? "D is a nonzero constant" : L.topology_method) << "): "
+            << T.components.size() << " component(s), " << T.number_of_singular_points()
             << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
   for (std::size_t i = 0; i < T.components.size(); ++i) {
     const auto& c = T.components[i];
@@ -263,9 +288,32 @@ std::shared_ptr<std::string> patch_intersect_domain() {
   return d;
 }
 
+// "--patches I,J": indices of the patches (I in FILE_A, J in FILE_B or, without FILE_B, also in FILE_A).
+std::pair<std::size_t, std::size_t> patch_indices(const std::string& text, bool one) {
+  if (text.empty()) return {0, one ? 0 : 1};
+  std::vector<long> v;
+  std::size_t pos = 0;
+  while (pos <= text.size()) {
+    const std::size_t c = text.find(',', pos);
+    const std::string item = text.substr(pos, c == std::string::npos ? std::string::npos : c - pos);
+    char* end = nullptr;
+    const long x = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || x < 0)
+      throw bezoutian::Invalid_input("--patches expects non-negative indices separated by a comma, got '" + text + "'");
+    v.push_back(x);
+    if (c == std::string::npos) break;
+    pos = c + 1;
+  }
+  if (v.size() != (one ? 1u : 2u))
+    throw bezoutian::Invalid_input(std::string("--patches expects ") + (one ? "one index" : "two indices I,J") +
+                                   ", got '" + text + "'");
+  return {std::size_t(v[0]), std::size_t(one ? v[0] : v[1])};
+}
+
 void run_patch_intersect(const Intersect_options& o) {
-  Patch a = patch_of(o.file_a, 0);
-  Patch b = o.file_b.empty() ? patch_of(o.file_a, 1) : patch_of(o.file_b, 0);
+  const auto idx = patch_indices(o.patches, false);
+  Patch a = patch_of(o.file_a, idx.first);
+  Patch b = o.file_b.empty() ? patch_of(o.file_a, idx.second) : patch_of(o.file_b, idx.second);
   run(false, a, &b, o, *patch_intersect_domain());
 }
 
@@ -274,16 +322,18 @@ Register self_registration([](CLI::App& app) {
   auto o = std::make_shared<Intersect_options>();
   auto domain = std::make_shared<std::string>();
   auto* sub = app.add_subcommand("self-intersect", "Self-intersection locus of a patch with certified topology");
-  sub->add_option("FILE", o->file_a, "patch file (the first patch is used)")->required();
+  sub->add_option("FILE", o->file_a, "patch file (the first patch, or the one named by --patch)")->required();
+  sub->add_option("--patch", o->patches, "index (0-based) of the patch in FILE");
   sub->add_option("--box", o->box, "region u0,u1,v0,v1 of the (u,v) plane to analyse (default 0,1,0,1)");
   sub->add_option("--domain", *domain, "partner domain u0,u1,v0,v1 (default 0,1,0,1) or 'none'");
   sub->add_option("--svg", o->svg, "write the picture of the locus in the (u,v) plane");
   sub->add_option("--obj", o->obj, "write the patch mesh and the 3D double curve");
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
-  sub->add_option("--max-degree", o->max_degree, "largest total degree of D for the certified topology (default 16)");
+  sub->add_option("--max-degree", o->max_degree,
+                  "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o, domain] {
-    Patch p = patch_of(o->file_a, 0);
+    Patch p = patch_of(o->file_a, patch_indices(o->patches, true).first);
     run(true, p, nullptr, *o, *domain);
   });
 });

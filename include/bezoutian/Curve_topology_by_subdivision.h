@@ -54,6 +54,7 @@ struct Subdivision_topology_options {
   int max_depth = 30;             ///< deepest split level (boxes of width about 0.5^30 of the domain); the first box
                                   ///< still unresolved there ends the computation (not certified)
   std::size_t max_boxes = 20000;  ///< total number of boxes examined
+  double max_work = 2e8;          ///< bound on interval operations (boxes x (a+1)(b+1)(a+b) for bi-degree (a,b))
   int samples_per_arc = 6;         ///< floating-point sample points per arc piece inside one leaf box
 };
 
@@ -116,7 +117,8 @@ class Subdivision_topology {
         for (int i = 0; i <= D[j].degree(); ++i) bits = std::max(bits, long(D[j][i].bit_size()));
       }
     bits_ = bits;
-    prec_ = mpfr_prec_t(192 + 4 * (a_ + b_));
+    // the power -> Bernstein conversion and the splits lose about a + b + log2(depth) bits
+    prec_ = mpfr_prec_t(96 + 2 * (a_ + b_));
     // scaled double copy of D for sample points: coefficient * 2^-bits
     scaled_.assign(std::size_t(a_ + 1) * (b_ + 1), 0.0L);
     for (int j = 0; j <= D.degree(); ++j)
@@ -135,8 +137,9 @@ class Subdivision_topology {
     while (!stack.empty()) {
       Box B = stack.back();
       stack.pop_back();
-      if (++res.boxes > o_.max_boxes) {
-        res.reason = "more than " + std::to_string(o_.max_boxes) + " boxes";
+      if (++res.boxes > o_.max_boxes ||
+          double(res.boxes) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) > o_.max_work) {
+        res.reason = "the subdivision budget was exhausted after " + std::to_string(res.boxes - 1) + " boxes";
         return res;
       }
       const Interval_grid& g = *B.grid;

@@ -11,6 +11,7 @@
 #ifndef BEZOUTIAN_SURFACE_INTERSECTION_H
 #define BEZOUTIAN_SURFACE_INTERSECTION_H
 
+#include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_topology_by_subdivision.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
@@ -63,6 +64,18 @@ struct Locus_arc {
   std::vector<Locus_point> points;
 };
 
+/// Two patches in contact along their boundaries (the teapot's patches are glued edge to edge): a piece of a
+/// boundary curve of the first patch lying on a boundary curve of the second (`shared_curve`), or an isolated
+/// common boundary point (touching corners, a boundary crossing). Decided exactly with the curve engine
+/// (intersect_curves on the boundary curves); parameters run along the boundary curves.
+struct Boundary_contact {
+  int side_first = 0, side_second = 0;  ///< boundary_curve sides: 0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0
+  bool shared_curve = false;            ///< infinitely many common points (a common piece of boundary curve)
+  Algebraic_real first_0, first_1;      ///< parameter range on the first patch's boundary curve (equal for a point)
+  Algebraic_real second_0, second_1;    ///< the corresponding range on the second patch's boundary curve
+  std::array<double, 3> point{};        ///< the contact point (the start of a shared piece)
+};
+
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
@@ -73,6 +86,8 @@ struct Surface_locus {
   /// "subdivision" (Bernstein subdivision in the box) or "curve analysis" (CGAL's arrangement), if computed
   std::string topology_method;
   std::string note;  ///< why the topology was not computed, if it was not
+  /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
+  std::vector<Boundary_contact> contacts;
 };
 
 namespace internal {
@@ -327,6 +342,70 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   return L;
 }
 
+/// \brief The boundary contacts of two patches (see Boundary_contact): every pair of boundary curves is
+/// intersected exactly; common pieces are reported once per pair of sides, isolated common points once per
+/// point (a corner belongs to two sides) unless they lie on a reported common piece.
+inline std::vector<Boundary_contact> boundary_contacts(const Rational_bezier_patch<Rational>& phi,
+                                                       const Rational_bezier_patch<Rational>& psi) {
+  using Curve = Rational_bezier_curve_3<Rational>;
+  std::vector<Boundary_contact> shared, points;
+  // (u, v) on the first patch of parameter a along side s
+  auto uv = [](int side, const Algebraic_real& a) {
+    switch (side) {
+      case 0: return std::make_pair(a, Algebraic_real(0));
+      case 1: return std::make_pair(Algebraic_real(1), a);
+      case 2: return std::make_pair(a, Algebraic_real(1));
+      default: return std::make_pair(Algebraic_real(0), a);
+    }
+  };
+  auto on_shared = [&](const std::pair<Algebraic_real, Algebraic_real>& p) {
+    for (const auto& c : shared) {
+      const auto q0 = uv(c.side_first, c.first_0), q1 = uv(c.side_first, c.first_1);
+      const bool u_in = (q0.first <= p.first && p.first <= q1.first) || (q1.first <= p.first && p.first <= q0.first);
+      const bool v_in = (q0.second <= p.second && p.second <= q1.second) || (q1.second <= p.second && p.second <= q0.second);
+      if (u_in && v_in) return true;
+    }
+    return false;
+  };
+  auto is_point = [](const Curve& c) {  // positive weights: constant iff all control points coincide
+    for (std::size_t i = 1; i < c.number_of_control_points(); ++i)
+      if (c.control_point(i) != c.control_point(0)) return false;
+    return true;
+  };
+  auto approx = [](const Curve& c, const Algebraic_real& a) {
+    const auto x = c.evaluate(a.to_double());
+    return std::array<double, 3>{x[0], x[1], x[2]};
+  };
+  for (int s1 = 0; s1 < 4; ++s1) {
+    const Curve c1 = phi.boundary_curve<Curve>(s1);
+    for (int s2 = 0; s2 < 4; ++s2) {
+      const Curve c2 = psi.boundary_curve<Curve>(s2);
+      const Curve_intersection_result r = intersect_curves(c1, c2);
+      const bool collapsed = is_point(c1) || is_point(c2);
+      for (const auto& ov : r.overlaps) {
+        Boundary_contact b{s1, s2, !collapsed, ov.s0, ov.s1, ov.t0, ov.t1, approx(c1, ov.s0)};
+        if (collapsed)
+          points.push_back(b);
+        else
+          shared.push_back(b);
+      }
+      for (const auto& p : r.points) points.push_back({s1, s2, false, p.s, p.s, p.t, p.t, approx(c1, p.s)});
+    }
+  }
+  std::vector<Boundary_contact> out = shared;
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> seen;
+  for (const auto& b : points) {
+    const auto p = uv(b.side_first, b.first_0);
+    if (on_shared(p)) continue;
+    bool dup = false;
+    for (const auto& q : seen) dup = dup || (q.first == p.first && q.second == p.second);
+    if (dup) continue;
+    seen.push_back(p);
+    out.push_back(b);
+  }
+  return out;
+}
+
 /// \brief Intersection curve of the patches `phi` (u,v) and `psi` (s,t) (Theorems 2, 3): D(u,t), its certified
 /// topology in `o.box`, and every traced point lifted to (u,v) on phi and (s,t) on psi.
 inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& phi,
@@ -334,6 +413,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
                                         const Surface_intersection_options& o = {}) {
   Surface_locus L;
   L.self_intersection = false;
+  L.contacts = boundary_contacts(phi, psi);
   L.equation = intersection_equation(phi, psi, o.formula);
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
