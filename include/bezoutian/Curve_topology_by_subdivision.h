@@ -55,7 +55,7 @@ struct Subdivision_topology_options {
                                   ///< still unresolved there ends the computation (not certified)
   std::size_t max_boxes = 20000;  ///< total number of boxes examined
   double max_work = 2e8;          ///< bound on interval operations (boxes x (a+1)(b+1)(a+b) for bi-degree (a,b))
-  int samples_per_arc = 6;         ///< floating-point sample points per arc piece inside one leaf box
+  int samples_per_arc = 12;        ///< floating-point sample points per arc piece inside one leaf box
 };
 
 /// Result of subdivide_curve_in_box().

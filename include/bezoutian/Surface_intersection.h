@@ -160,7 +160,7 @@ inline bool inside(const Parameter_box& d, const std::array<double, 2>& p, doubl
 // Gauss-Newton polishing of the partner parameters (a, b) of a traced point: minimizes |r(a,b)| with
 // r : R^2 -> R^3 (three coordinate equations, two unknowns); the Jacobian by central differences.
 template <class R>
-std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iterations = 8) {
+std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iterations = 16) {
   auto norm = [](const std::array<double, 3>& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
   std::array<double, 3> f = r(x[0], x[1]);
   for (int it = 0; it < iterations; ++it) {
@@ -180,10 +180,15 @@ std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iteration
     }
     const double det = a11 * a22 - a12 * a12;
     if (!(std::fabs(det) > 0)) break;
-    std::array<double, 2> y = {x[0] + (b1 * a22 - b2 * a12) / det, x[1] + (a11 * b2 - a12 * b1) / det};
-    auto fy = r(y[0], y[1]);
-    if (!(norm(fy) < norm(f))) break;
-    x = y, f = fy;
+    // damped step: halve it until the residual decreases (a full Gauss-Newton step overshoots far from the root)
+    const std::array<double, 2> d = {(b1 * a22 - b2 * a12) / det, (a11 * b2 - a12 * b1) / det};
+    bool improved = false;
+    for (double lambda = 1; lambda > 1e-3 && !improved; lambda *= 0.5) {
+      const std::array<double, 2> y = {x[0] + lambda * d[0], x[1] + lambda * d[1]};
+      const auto fy = r(y[0], y[1]);
+      if (norm(fy) < norm(f)) x = y, f = fy, improved = true;
+    }
+    if (!improved) break;
   }
   return x;
 }
@@ -329,6 +334,24 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
       if (!q.lifted) return q;
     }
     lk = internal::polish_partner(residual, lk);
+    if (!guess) {  // the kernel may give a wrong partner where it has dimension > 1: search the partner domain
+      auto size = [&](const std::array<double, 2>& x) {
+        const auto f = residual(x[0], x[1]);
+        return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+      };
+      if (!(size(lk) <= 1e-9)) {
+        const Parameter_box& d = o.partner_domain;
+        const std::array<double, 4> range =
+            o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                       : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
+                                                               CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
+        const auto seed = internal::grid_seed(residual, range);
+        if (std::isfinite(seed[0])) {
+          const auto alt = internal::polish_partner(residual, seed);
+          if (std::fabs(alt[0]) + std::fabs(alt[1]) > 1e-9 && size(alt) < size(lk)) lk = alt;
+        }
+      }
+    }
     q.partner = lk;
     q.first = {u, v + lk[1]};
     q.second = {u + lk[0], v};
@@ -449,6 +472,24 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       if (!q.lifted) return q;
     }
     vs = internal::polish_partner(residual, vs);
+    if (!guess) {  // the kernel may give a wrong partner where it has dimension > 1: search the partner domain
+      auto size = [&](const std::array<double, 2>& x) {
+        const auto f = residual(x[0], x[1]);
+        return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+      };
+      if (!(size(vs) <= 1e-9)) {
+        const Parameter_box& d = o.partner_domain;
+        const std::array<double, 4> range =
+            o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                       : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
+                                                               CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
+        const auto seed = internal::grid_seed(residual, range);
+        if (std::isfinite(seed[0])) {
+          const auto alt = internal::polish_partner(residual, seed);
+          if (size(alt) < size(vs)) vs = alt;
+        }
+      }
+    }
     q.partner = vs;
     q.first = {u, vs[0]};
     q.second = {vs[1], t};

@@ -113,3 +113,55 @@ TEST_CASE("a paraboloid and a bent paraboloid cross along a closed curve", "[sur
   for (const auto& c : L.topology.components) closed |= c.closed;
   CHECK(closed);
 }
+
+// The teapot's patches are glued edge to edge: the contacts must be found exactly. Independent check: a shared
+// edge means the two rows of control points coincide (possibly reversed), read directly from the data file.
+TEST_CASE("teapot: shared boundary curves and touching corners are reported as contacts", "[surface][teapot]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  using Curve = Rational_bezier_curve_3<Rational>;
+  auto same_row = [](const Curve& a, const Curve& b) {
+    bool fwd = true, bwd = true;
+    const std::size_t n = a.number_of_control_points();
+    if (n != b.number_of_control_points()) return false;
+    for (std::size_t i = 0; i < n; ++i) {
+      fwd = fwd && a.control_point(i) == b.control_point(i);
+      bwd = bwd && a.control_point(i) == b.control_point(n - 1 - i);
+    }
+    return fwd || bwd;
+  };
+  int shared_edges = 0, corner_points = 0;
+  for (std::size_t i = 0; i < 4; ++i)
+    for (std::size_t j = i + 1; j < 8; ++j) {
+      const auto contacts = boundary_contacts(doc.patches[i], doc.patches[j]);
+      for (const auto& c : contacts) {
+        INFO("patches " << i << ", " << j << " sides " << c.side_first << ", " << c.side_second);
+        const Curve a = doc.patches[i].boundary_curve<Curve>(c.side_first);
+        const Curve b = doc.patches[j].boundary_curve<Curve>(c.side_second);
+        if (c.shared_curve) {
+          ++shared_edges;
+          CHECK(same_row(a, b));  // the whole edge is shared in the teapot
+          CHECK(((c.first_0 == 0 && c.first_1 == 1) || (c.first_0 == 1 && c.first_1 == 0)));
+        } else {
+          ++corner_points;  // an exact common point: rational parameters, equal exact points
+          REQUIRE(c.first_0.is_rational());
+          REQUIRE(c.second_0.is_rational());
+          CHECK(a(c.first_0.rational_value()) == b(c.second_0.rational_value()));
+        }
+      }
+      // conversely: every pair of identical boundary rows is reported as a shared edge
+      for (int s1 = 0; s1 < 4; ++s1)
+        for (int s2 = 0; s2 < 4; ++s2) {
+          const Curve a = doc.patches[i].boundary_curve<Curve>(s1), b = doc.patches[j].boundary_curve<Curve>(s2);
+          bool degenerate = true;
+          for (std::size_t k = 1; k < a.number_of_control_points(); ++k)
+            degenerate = degenerate && a.control_point(k) == a.control_point(0);
+          if (degenerate || !same_row(a, b)) continue;
+          bool reported = false;
+          for (const auto& c : contacts) reported = reported || (c.shared_curve && c.side_first == s1 && c.side_second == s2);
+          CHECK(reported);
+        }
+    }
+  CHECK(shared_edges >= 8);
+  CHECK(corner_points >= 4);
+}
