@@ -211,6 +211,23 @@ std::array<double, 2> grid_seed(R r, const std::array<double, 4>& range) {
   return best;
 }
 
+// A polished partner that does not solve the equations (the kernel can point to a wrong partner where it has
+// dimension > 1) is replaced by the best polished grid seed over the partner range, if that is better.
+template <class R>
+std::array<double, 2> search_if_unsolved(R residual, std::array<double, 2> x, const std::array<double, 4>& range,
+                                         bool exclude_trivial) {
+  auto size = [&](const std::array<double, 2>& y) {
+    const auto f = residual(y[0], y[1]);
+    return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  };
+  if (size(x) <= 1e-9) return x;
+  const auto seed = grid_seed(residual, range);
+  if (!std::isfinite(seed[0])) return x;
+  const auto alt = polish_partner(residual, seed);
+  if (exclude_trivial && std::fabs(alt[0]) + std::fabs(alt[1]) <= 1e-9) return x;
+  return size(alt) < size(x) ? alt : x;
+}
+
 // Lifts every traced point with `lift_point(u, v, guess)`: the kernel gives the partner at regular points;
 // at a singular vertex the kernel has dimension > 1 and each arc continues its own partner from its
 // neighbouring point (three branches through a triple point have three partners there).
@@ -334,23 +351,13 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
       if (!q.lifted) return q;
     }
     lk = internal::polish_partner(residual, lk);
-    if (!guess) {  // the kernel may give a wrong partner where it has dimension > 1: search the partner domain
-      auto size = [&](const std::array<double, 2>& x) {
-        const auto f = residual(x[0], x[1]);
-        return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-      };
-      if (!(size(lk) <= 1e-9)) {
-        const Parameter_box& d = o.partner_domain;
-        const std::array<double, 4> range =
-            o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
-                                       : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
-                                                               CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
-        const auto seed = internal::grid_seed(residual, range);
-        if (std::isfinite(seed[0])) {
-          const auto alt = internal::polish_partner(residual, seed);
-          if (std::fabs(alt[0]) + std::fabs(alt[1]) > 1e-9 && size(alt) < size(lk)) lk = alt;
-        }
-      }
+    if (!guess) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
+                                                             CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
+      lk = internal::search_if_unsolved(residual, lk, range, true);
     }
     q.partner = lk;
     q.first = {u, v + lk[1]};
@@ -472,23 +479,13 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       if (!q.lifted) return q;
     }
     vs = internal::polish_partner(residual, vs);
-    if (!guess) {  // the kernel may give a wrong partner where it has dimension > 1: search the partner domain
-      auto size = [&](const std::array<double, 2>& x) {
-        const auto f = residual(x[0], x[1]);
-        return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-      };
-      if (!(size(vs) <= 1e-9)) {
-        const Parameter_box& d = o.partner_domain;
-        const std::array<double, 4> range =
-            o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
-                                       : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
-                                                               CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
-        const auto seed = internal::grid_seed(residual, range);
-        if (std::isfinite(seed[0])) {
-          const auto alt = internal::polish_partner(residual, seed);
-          if (size(alt) < size(vs)) vs = alt;
-        }
-      }
+    if (!guess) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
+                                                             CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
+      vs = internal::search_if_unsolved(residual, vs, range, false);
     }
     q.partner = vs;
     q.first = {u, vs[0]};
