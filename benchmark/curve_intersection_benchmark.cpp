@@ -8,6 +8,9 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 using namespace bezoutian;
@@ -29,6 +32,47 @@ double time_ms(const Curve_problem<D>& p, Curve_intersection_method m) {
   return ms;
 }
 
+// The system F_k(s,t) = X1_k(s) W2(t) - X2_k(t) W1(s) in Singular's syntax.
+template <int D>
+std::string singular_ideal(const Curve_problem<D>& p) {
+  const auto H1 = internal::integer_power_form(p.curve_1), H2 = internal::integer_power_form(p.curve_2);
+  std::ostringstream o;
+  for (int k = 1; k <= D; ++k) {
+    const auto F = internal::cross_term(H1[k], H2[0], H2[k], H1[0]);
+    std::ostringstream f;
+    bool first = true;
+    for (int j = 0; j <= F.degree(); ++j)
+      for (int i = 0; !CGAL::is_zero(F[j]) && i <= F[j].degree(); ++i)
+        if (!CGAL::is_zero(F[j][i])) {
+          f << (first ? "" : "+") << "(" << F[j][i] << ")*s^" << i << "*t^" << j;
+          first = false;
+        }
+    o << (k > 1 ? ", " : "") << (first ? "0" : f.str());
+  }
+  return o.str();
+}
+
+// Median ms of Singular's std() (lexicographic, t > s: the basis contains the eliminant in s) over the systems,
+// timed inside one Singular process (rtimer, 1000 ticks per second); -1 if Singular is not installed.
+double singular_median_ms(const std::vector<std::string>& ideals) {
+  if (ideals.empty() || std::system("command -v Singular > /dev/null 2>&1") != 0) return -1;
+  const std::string script = "/tmp/bezoutian_singular_bench.sing", out = "/tmp/bezoutian_singular_bench.out";
+  {
+    std::ofstream f(script);
+    f << "system(\"--ticks-per-sec\",1000);\nring r=0,(t,s),lp;\noption(redSB);\n";
+    for (const auto& I : ideals)
+      f << "ideal I = " << I << "; int t0 = rtimer; ideal G = std(I); \"T \" + string(rtimer - t0); kill I, G, t0;\n";
+    f << "quit;\n";
+  }
+  if (std::system(("Singular -q " + script + " > " + out + " 2>&1").c_str()) != 0) return -1;
+  std::ifstream in(out);
+  std::vector<double> t;
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("T ", 0) == 0) t.push_back(std::atof(line.c_str() + 2));
+  return t.size() == ideals.size() ? median(t) : -1;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -39,19 +83,21 @@ int main(int argc, char** argv) {
                                                 Curve_intersection_method::subresultant,
                                                 Curve_intersection_method::projection,
                                                 Curve_intersection_method::resolvent};
-  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / subresultant / projection / resolvent\n", n);
+  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / subresultant / projection / resolvent"
+              " | Singular std (lex)\n", n);
   for (int rat = 1; rat >= 0; --rat) {
     std::printf("%s curves\n  deg  ", rat ? "rational" : "polynomial");
-    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                         ", k);
+    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                                ", k);
     std::printf("\n");
     for (int n2 = 2; n2 <= 6; ++n2) {
       std::printf("  3-%d ", n2);
       for (int k = 0; k <= 4; ++k) {
         if (k > n2 + 1) {  // the generator needs k <= degree_2 + 1 (blank in du-1989's tables too)
-          std::printf("      -/     -/     -/     -  ");
+          std::printf("      -/     -/     -/     - |     -  ");
           continue;
         }
         std::vector<double> t[4];
+        std::vector<std::string> ideals;
         for (int i = 0; i < n; ++i) {
           Curve_problem_parameters par;
           par.degree_1 = 3;
@@ -62,8 +108,10 @@ int main(int argc, char** argv) {
           par.seed = 100000UL * n2 + 1000UL * k + 10UL * i + rat;
           const auto p = generate_curve_problem<3>(par);
           for (int m = 0; m < 4; ++m) t[m].push_back(time_ms(p, methods[m]));
+          ideals.push_back(singular_ideal(p));
         }
-        std::printf(" %6.2f/%6.2f/%6.2f/%6.2f ", median(t[0]), median(t[1]), median(t[2]), median(t[3]));
+        std::printf(" %6.2f/%6.2f/%6.2f/%6.2f|%6.1f ", median(t[0]), median(t[1]), median(t[2]), median(t[3]),
+                    singular_median_ms(ideals));
       }
       std::printf("\n");
     }
