@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <functional>
+#include <map>
+#include <numeric>
 #include <vector>
 
 namespace bezoutian {
@@ -64,6 +67,47 @@ struct Curve_topology_in_box {
     return std::count_if(vertices.begin(), vertices.end(), [](const Curve_topology_vertex& v) { return v.on_boundary; });
   }
 };
+
+namespace internal {
+
+/// Half-branch and branch counts of the vertices and the connected components of the edges (union-find);
+/// isolated-point vertices (already given their own components) are left alone. A component is closed iff
+/// none of its vertices is on the box boundary.
+inline void assign_components(Curve_topology_in_box& out) {
+  std::vector<std::size_t> parent(out.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
+    return parent[i] == i ? i : parent[i] = find(parent[i]);
+  };
+  for (const auto& e : out.edges) {
+    out.vertices[e.source].half_branches++;
+    out.vertices[e.target].half_branches++;
+    parent[find(e.source)] = find(e.target);
+  }
+  for (auto& v : out.vertices)
+    if (v.kind != Curve_topology_vertex::isolated)
+      v.branches = v.on_boundary ? v.half_branches : std::max(1, v.half_branches / 2);
+  std::map<std::size_t, std::size_t> comp_of_root;
+  for (std::size_t i = 0; i < out.edges.size(); ++i) {
+    const std::size_t r = find(out.edges[i].source);
+    auto it = comp_of_root.find(r);
+    if (it == comp_of_root.end()) {
+      it = comp_of_root.emplace(r, out.components.size()).first;
+      out.components.emplace_back();
+      out.components.back().closed = true;
+    }
+    out.components[it->second].edges.push_back(i);
+  }
+  for (std::size_t i = 0; i < out.vertices.size(); ++i) {
+    if (out.vertices[i].kind == Curve_topology_vertex::isolated) continue;
+    auto it = comp_of_root.find(find(i));
+    if (it == comp_of_root.end()) continue;
+    out.components[it->second].vertices.push_back(i);
+    if (out.vertices[i].on_boundary) out.components[it->second].closed = false;
+  }
+}
+
+} // namespace internal
 
 } // namespace bezoutian
 

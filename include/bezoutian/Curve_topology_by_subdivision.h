@@ -612,35 +612,7 @@ class Subdivision_topology {
       const std::size_t k2 = used[at[reached][0]] ? at[reached][1] : at[reached][0];
       chain(reached, k2, true, start);
     }
-    // components and branch counts (union-find over the edges)
-    std::vector<std::size_t> parent(out.vertices.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
-      return parent[i] == i ? i : parent[i] = find(parent[i]);
-    };
-    for (const auto& e : out.edges) {
-      out.vertices[e.source].half_branches++;
-      out.vertices[e.target].half_branches++;
-      parent[find(e.source)] = find(e.target);
-    }
-    for (auto& v : out.vertices) v.branches = v.on_boundary ? v.half_branches : std::max(1, v.half_branches / 2);
-    std::map<std::size_t, std::size_t> comp;
-    for (std::size_t i = 0; i < out.edges.size(); ++i) {
-      const std::size_t r = find(out.edges[i].source);
-      auto it = comp.find(r);
-      if (it == comp.end()) {
-        it = comp.emplace(r, out.components.size()).first;
-        out.components.emplace_back();
-        out.components.back().closed = true;
-      }
-      out.components[it->second].edges.push_back(i);
-    }
-    for (std::size_t i = 0; i < out.vertices.size(); ++i) {
-      auto it = comp.find(find(i));
-      if (it == comp.end()) continue;
-      out.components[it->second].vertices.push_back(i);
-      if (out.vertices[i].on_boundary) out.components[it->second].closed = false;
-    }
+    internal::assign_components(out);
     return true;
   }
 

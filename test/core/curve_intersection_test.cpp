@@ -64,8 +64,9 @@ void check_extra(const Rational_bezier_curve<Rational, D>& a, const Rational_bez
   for (int k = 0; k < D; ++k) CHECK(std::abs(x[k] - y[k]) < 1e-9 * (1 + std::abs(x[k])));
 }
 
+// du-1989 §4.2 generator with the parameters of these tests
 template <int D>
-int run_generated(int n1, int n2, int k, bool rational, unsigned long seed) {
+Curve_problem<D> make_problem(int n1, int n2, int k, bool rational, unsigned long seed) {
   Curve_problem_parameters par;
   par.degree_1 = n1;
   par.degree_2 = n2;
@@ -73,7 +74,12 @@ int run_generated(int n1, int n2, int k, bool rational, unsigned long seed) {
   par.rational = rational;
   par.seed = seed;
   par.range = 16;
-  const Curve_problem<D> pb = generate_curve_problem<D>(par);
+  return generate_curve_problem<D>(par);
+}
+
+template <int D>
+int run_generated(int n1, int n2, int k, bool rational, unsigned long seed) {
+  const Curve_problem<D> pb = make_problem<D>(n1, n2, k, rational, seed);
   INFO("D=" << D << " n1=" << n1 << " n2=" << n2 << " k=" << k << " rational=" << rational << " seed=" << seed);
   // the construction itself: C2(t_j) == C1(s_j)
   for (const auto& st : pb.known) REQUIRE(pb.curve_1(st.first) == pb.curve_2(st.second));
@@ -132,14 +138,7 @@ TEST_CASE("generated space problems (du-1989 §4.2 protocol, degrees 3-2..3-6)",
 // solved by the subresultant strategy, which must return the same exact answer.
 template <int D>
 void run_generated_at_scale(int n1, int n2, int k, bool rational, unsigned long seed, bool compare) {
-  Curve_problem_parameters par;
-  par.degree_1 = n1;
-  par.degree_2 = n2;
-  par.intersections = k;
-  par.rational = rational;
-  par.seed = seed;
-  par.range = 16;
-  const Curve_problem<D> pb = generate_curve_problem<D>(par);
+  const Curve_problem<D> pb = make_problem<D>(n1, n2, k, rational, seed);
   INFO("D=" << D << " n1=" << n1 << " n2=" << n2 << " k=" << k << " rational=" << rational << " seed=" << seed);
   const Curve_intersection_result r = intersect_curves(pb.curve_1, pb.curve_2);
   CHECK(r.overlaps.empty());
@@ -210,19 +209,11 @@ TEST_CASE("groebner strategy: the lex basis eliminant, and identical answers on 
     for (int n2 = 2; n2 <= 3 - (n1 == 3); ++n2)
       for (int k = 0; k <= 3; ++k)
         for (int rat = 0; rat <= 1; ++rat) {
-          Curve_problem_parameters par;
-          par.degree_1 = n1;
-          par.degree_2 = n2;
-          par.intersections = k;
-          par.rational = rat == 1;
-          par.seed = seed++;
-          par.range = 16;
-          const auto pb = generate_curve_problem<2>(par);
+          const auto pb = make_problem<2>(n1, n2, k, rat == 1, seed);
           INFO("n1=" << n1 << " n2=" << n2 << " k=" << k << " rational=" << rat);
           require_same<2>(intersect_curves(pb.curve_1, pb.curve_2),
                           intersect_curves(pb.curve_1, pb.curve_2, Curve_intersection_method::groebner));
-          par.degree_1 = 3;
-          const auto sp = generate_curve_problem<3>(par);
+          const auto sp = make_problem<3>(3, n2, k, rat == 1, seed++);
           require_same<3>(intersect_curves(sp.curve_1, sp.curve_2),
                           intersect_curves(sp.curve_1, sp.curve_2, Curve_intersection_method::groebner));
         }
