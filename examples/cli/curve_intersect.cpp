@@ -1,5 +1,6 @@
 // bezoutian intersect A [B] for curves: certified curve/curve intersection (include/bezoutian/Curve_intersection.h).
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 
 #include <bezoutian/Curve_intersection.h>
@@ -30,17 +31,9 @@ Curves load_curves(const std::string& path) {
   return Curves{f.doc.curves_2, f.doc.curves_3, !f.doc.patches.empty()};
 }
 
-std::string exact(const Rational& q) { return bezoutian::io::to_exact_string(q); }
-
-// An exact end: the rational itself, or (irrational) the 30-digit decimal.
-std::string exact_or_decimal(const Algebraic_real& a) {
-  return a.is_rational() ? exact(a.rational_value()) : a.to_decimal_string(30);
-}
-
-nlohmann::json interval(const Algebraic_real& a) {
-  if (a.is_rational()) return {exact(a.rational_value()), exact(a.rational_value())};
-  return {exact(a.lower()), exact(a.upper())};
-}
+using bezoutian_cli::exact;
+using bezoutian_cli::exact_or_decimal;
+using bezoutian_cli::interval;
 
 // Point C(s) to 20 significant digits: C evaluated exactly at a rational within 2^-200 of s (the printed digits are
 // an approximation, the parameters are the exact answer).

@@ -1,6 +1,7 @@
 // bezoutian intersect for a space curve (or segment) and a patch: certified curve/patch intersection
 // (include/bezoutian/Curve_surface_intersection.h, du-1989 Problems 2.2a/2.2b).
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 
 #include <bezoutian/Curve_surface_intersection.h>
@@ -19,16 +20,9 @@ namespace {
 using bezoutian::Algebraic_real;
 using bezoutian::Rational;
 
-std::string exact(const Rational& q) { return bezoutian::io::to_exact_string(q); }
-
-std::string exact_or_decimal(const Algebraic_real& a) {
-  return a.is_rational() ? exact(a.rational_value()) : a.to_decimal_string(30);
-}
-
-nlohmann::json interval(const Algebraic_real& a) {
-  if (a.is_rational()) return {exact(a.rational_value()), exact(a.rational_value())};
-  return {exact(a.lower()), exact(a.upper())};
-}
+using bezoutian_cli::exact;
+using bezoutian_cli::exact_or_decimal;
+using bezoutian_cli::interval;
 
 // C(r) to 20 significant digits: C evaluated exactly at a rational within 2^-200 of r.
 std::vector<std::string> point(const bezoutian::Rational_bezier_curve_3<>& c, const Algebraic_real& r) {
