@@ -110,6 +110,39 @@ std::size_t fraction_free_rank(std::vector<std::vector<R>> A) {
   return rank;
 }
 
+/// A basis of the right kernel {x : A x = 0} of a rational matrix (reduced row echelon form).
+inline std::vector<std::vector<Rational>> right_kernel(std::vector<std::vector<Rational>> a) {
+  const std::size_t nr = a.size(), nc = nr == 0 ? 0 : a[0].size();
+  std::vector<std::size_t> pivots;
+  std::size_t r = 0;
+  for (std::size_t c = 0; c < nc && r < nr; ++c) {
+    std::size_t p = r;
+    while (p < nr && CGAL::is_zero(a[p][c])) ++p;
+    if (p == nr) continue;
+    std::swap(a[p], a[r]);
+    const Rational inv = Rational(1) / a[r][c];
+    for (std::size_t j = c; j < nc; ++j) a[r][j] *= inv;
+    for (std::size_t i = 0; i < nr; ++i) {
+      if (i == r || CGAL::is_zero(a[i][c])) continue;
+      const Rational f = a[i][c];
+      for (std::size_t j = c; j < nc; ++j) a[i][j] -= f * a[r][j];
+    }
+    pivots.push_back(c);
+    ++r;
+  }
+  std::vector<std::vector<Rational>> basis;
+  std::vector<char> is_pivot(nc, 0);
+  for (std::size_t c : pivots) is_pivot[c] = 1;
+  for (std::size_t f = 0; f < nc; ++f) {
+    if (is_pivot[f]) continue;
+    std::vector<Rational> x(nc, Rational(0));
+    x[f] = Rational(1);
+    for (std::size_t i = 0; i < pivots.size(); ++i) x[pivots[i]] = -a[i][f];
+    basis.push_back(x);
+  }
+  return basis;
+}
+
 } // namespace internal
 } // namespace bezoutian
 
