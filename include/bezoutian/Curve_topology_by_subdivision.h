@@ -25,12 +25,30 @@
 // neither derivative keeps a sign, and the subdivision stops at the first box that reaches `max_depth`, with
 // `certified == false`, naming that box). Arc sample points are floating-point (bisection on a vertical/horizontal segment where
 // the exact analysis proved exactly one crossing); vertex enclosures are exact isolating intervals.
+//
+// Singular and isolated points (nondegenerate ones: ordinary nodes and acnodes). A box B that is neither
+// excluded nor simple is resolved around a critical point p of D when
+//  (1) the Hessian of D is regular on B (interval determinant of the Bernstein ranges of D_uu, D_uv, D_vv,
+//      the two D_uv entries independent): then grad D is injective on B, so B holds at most one critical point,
+//      and the sign of det H says saddle or extremum;
+//  (2) Krawczyk's test on grad D proves a critical point p in a small box inside B;
+//  (3) D(p) = 0 is proved: exactly, if p is a (small) rational point (D, D_u, D_v vanish there), or by the
+//      caller's witness (two branches of D = 0 with distinct tangents through a point of B force grad D = 0
+//      there, so that point is p);
+//  (4) the exact crossings of D = 0 with the edges of B number 4 (saddle) or 0 (extremum).
+// Then D = 0 in B is exactly the four half-branches from p to the four crossings (an ordinary node), or the
+// point p alone (an isolated point): D = 0 is smooth in B \ {p} (no other critical point); a component of
+// B \ (D = 0) that does not reach the edges of B would hold an extremum of D, a critical point other than p;
+// so every arc of D = 0 in B reaches the edges, and the four half-branches at a nondegenerate saddle use up the
+// four crossings. If D(p) is proved nonzero the box is split as usual; if D(p) = 0 can be neither proved nor
+// excluded, the result is not certified (with that reason).
 #ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 #define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 
 #include <bezoutian/Curve_topology.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/Root_isolation.h>
+#include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/number_types.h>
 
 #include <CGAL/Polynomial.h>
@@ -38,6 +56,8 @@
 #include <mpfi.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -56,6 +76,16 @@ struct Subdivision_topology_options {
   std::size_t max_boxes = 20000;  ///< total number of boxes examined
   double max_work = 2e8;          ///< bound on interval operations (boxes x (a+1)(b+1)(a+b) for bi-degree (a,b))
   int samples_per_arc = 12;        ///< floating-point sample points per arc piece inside one leaf box
+  /// Singular points: from this depth on, a box that is neither excluded nor simple is tested for a
+  /// nondegenerate critical point of D (see the header comment).
+  int singular_analysis_depth = 2;
+  /// Proof that D vanishes at a critical point. Called with a box B in which D has exactly one critical point p,
+  /// nondegenerate (proved), and a floating-point approximation of p. Must return true only if it proves that B
+  /// contains a point of D = 0 through which pass two branches of D = 0 with distinct tangents (real, or complex
+  /// conjugate): the gradient of D vanishes there, so that point is p. Surface_intersection.h proves it from two
+  /// distinct partners (Krawczyk's test on the 6 x 6 system). Without it (or when it fails), only rational
+  /// critical points are proved (exactly); others leave the result not certified.
+  std::function<bool(const Parameter_box&, const std::array<double, 2>&)> singular_point_witness;
 };
 
 /// Result of subdivide_curve_in_box().
@@ -148,6 +178,7 @@ class Subdivision_topology {
       const bool dv = b_ >= 1 && difference_sign(g, false) != 0;
       const bool du = a_ >= 1 && difference_sign(g, true) != 0;
       if ((dv || du) && resolve(B, dv)) continue;
+      if (!failed_ && B.depth >= o_.singular_analysis_depth && resolve_singular(B)) continue;
       if (failed_) {
         res.reason = failure_;
         return res;
@@ -180,7 +211,9 @@ class Subdivision_topology {
     bool vertical;
     Rational c;
     int index;
+    bool singular = false;  // a singular point (index into singular_), not a crossing with a line
     bool operator<(const Node_key& o) const {
+      if (singular != o.singular) return singular < o.singular;
       if (vertical != o.vertical) return vertical < o.vertical;
       if (c != o.c) return c < o.c;
       return index < o.index;
@@ -478,6 +511,333 @@ class Subdivision_topology {
     return true;
   }
 
+  // ---- singular and isolated points (see the header comment) ----
+  struct Singular_point {
+    Rational u_lo, u_hi, v_lo, v_hi;  // certified enclosure of p
+    bool isolated;
+  };
+
+  // Bernstein range (hull of the coefficients) on the box of d^2 D / dx^(2-k) dy^k in the box's local
+  // coordinates (x, y) in [0,1]^2; k = 0, 1, 2.
+  Mpfi_interval hessian_range(const Interval_grid& g, int k) const {
+    const int di = 2 - k, dj = k;
+    Mpfi_interval r = Mpfi_interval::point(0, prec_);
+    if (a_ < di || b_ < dj) return r;
+    mpfi_t t;
+    mpfi_init2(t, prec_);
+    bool first = true;
+    for (int i = 0; i + di <= a_; ++i)
+      for (int j = 0; j + dj <= b_; ++j) {
+        if (k == 0) {
+          mpfi_mul_2si(t, g.at(i + 1, j), 1);
+          mpfi_sub(t, g.at(i + 2, j), t);
+          mpfi_add(t, t, g.at(i, j));
+        } else if (k == 2) {
+          mpfi_mul_2si(t, g.at(i, j + 1), 1);
+          mpfi_sub(t, g.at(i, j + 2), t);
+          mpfi_add(t, t, g.at(i, j));
+        } else {
+          mpfi_sub(t, g.at(i + 1, j + 1), g.at(i + 1, j));
+          mpfi_sub(t, t, g.at(i, j + 1));
+          mpfi_add(t, t, g.at(i, j));
+        }
+        if (first)
+          mpfi_set(r.get(), t);
+        else
+          mpfi_union(r.get(), r.get(), t);
+        first = false;
+      }
+    const long f = k == 0 ? long(a_) * (a_ - 1) : (k == 2 ? long(b_) * (b_ - 1) : long(a_) * b_);
+    mpfi_mul_si(r.get(), r.get(), f);
+    mpfi_clear(t);
+    return r;
+  }
+
+  // The partial derivative d^(di+dj) D / dx^di dy^dj (di + dj <= 1) in local coordinates at the interval point
+  // (x, y), by de Casteljau's algorithm on the differenced coefficients: an enclosure of its range there.
+  Mpfi_interval grid_value(const Interval_grid& g, int di, int dj, const Mpfi_interval& x, const Mpfi_interval& y) const {
+    const int n = a_ - di, m = b_ - dj;
+    Mpfi_interval r = Mpfi_interval::point(0, prec_);
+    if (n < 0 || m < 0) return r;
+    std::vector<__mpfi_struct> w(std::size_t(n + 1) * (m + 1)), col(std::size_t(n + 1));
+    for (auto& z : w) mpfi_init2(&z, prec_);
+    for (auto& z : col) mpfi_init2(&z, prec_);
+    mpfi_t t, x1, y1;
+    mpfi_init2(t, prec_);
+    mpfi_init2(x1, prec_);
+    mpfi_init2(y1, prec_);
+    mpfi_ui_sub(x1, 1, x.get());
+    mpfi_ui_sub(y1, 1, y.get());
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= m; ++j) {
+        mpfi_ptr z = &w[std::size_t(i) * (m + 1) + j];
+        if (di)
+          mpfi_sub(z, g.at(i + 1, j), g.at(i, j));
+        else if (dj)
+          mpfi_sub(z, g.at(i, j + 1), g.at(i, j));
+        else
+          mpfi_set(z, g.at(i, j));
+      }
+    // collapse every row (fixed i) along y, then the column along x
+    for (int i = 0; i <= n; ++i) {
+      __mpfi_struct* row = &w[std::size_t(i) * (m + 1)];
+      for (int level = m; level >= 1; --level)
+        for (int j = 0; j < level; ++j) {
+          mpfi_mul(t, &row[j], y1);
+          mpfi_mul(&row[j], &row[j + 1], y.get());
+          mpfi_add(&row[j], &row[j], t);
+        }
+      mpfi_set(&col[i], &row[0]);
+    }
+    for (int level = n; level >= 1; --level)
+      for (int i = 0; i < level; ++i) {
+        mpfi_mul(t, &col[i], x1);
+        mpfi_mul(&col[i], &col[i + 1], x.get());
+        mpfi_add(&col[i], &col[i], t);
+      }
+    mpfi_set(r.get(), &col[0]);
+    if (di) mpfi_mul_si(r.get(), r.get(), a_);
+    if (dj) mpfi_mul_si(r.get(), r.get(), b_);
+    for (auto& z : w) mpfi_clear(&z);
+    for (auto& z : col) mpfi_clear(&z);
+    mpfi_clear(t);
+    mpfi_clear(x1);
+    mpfi_clear(y1);
+    return r;
+  }
+
+  // Long double copy of the grid's midpoints, scaled by a power of two (for Newton's method only).
+  std::vector<long double> long_double_grid(const Interval_grid& g) const {
+    mpfr_t m;
+    mpfr_init2(m, prec_);
+    long emax = LONG_MIN;
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        mpfi_mid(m, g.at(i, j));
+        if (!mpfr_zero_p(m)) emax = std::max(emax, long(mpfr_get_exp(m)));
+      }
+    std::vector<long double> out(g.size(), 0.0L);
+    if (emax != LONG_MIN)
+      for (int i = 0; i <= a_; ++i)
+        for (int j = 0; j <= b_; ++j) {
+          mpfi_mid(m, g.at(i, j));
+          mpfr_mul_2si(m, m, -emax, MPFR_RNDN);
+          out[std::size_t(i) * (b_ + 1) + j] = mpfr_get_ld(m, MPFR_RNDN);
+        }
+    mpfr_clear(m);
+    return out;
+  }
+
+  // Value and derivatives up to order 2 of the long double grid at (x, y): f, fx, fy, fxx, fxy, fyy.
+  std::array<long double, 6> local_jet(const std::vector<long double>& L, long double x, long double y) const {
+    // Bernstein basis values and first/second derivatives in each variable
+    auto basis = [](int n, long double t, std::vector<long double>& B0, std::vector<long double>& B1,
+                    std::vector<long double>& B2) {
+      auto bern = [&](int deg, std::vector<long double>& out) {
+        out.assign(std::size_t(std::max(deg, 0) + 1), 0.0L);
+        if (deg < 0) return;
+        out[0] = 1;
+        for (int d = 1; d <= deg; ++d) {
+          for (int k = d; k >= 1; --k) out[k] = out[k] * (1 - t) + out[k - 1] * t;
+          out[0] *= (1 - t);
+        }
+      };
+      std::vector<long double> b1, b2;
+      bern(n, B0);
+      bern(n - 1, b1);
+      bern(n - 2, b2);
+      B1.assign(std::size_t(n + 1), 0.0L);
+      B2.assign(std::size_t(n + 1), 0.0L);
+      for (int k = 0; k <= n; ++k) {  // d/dt B_k^n = n (B_{k-1}^{n-1} - B_k^{n-1})
+        if (n >= 1) B1[k] = n * ((k >= 1 && k - 1 <= n - 1 ? b1[k - 1] : 0) - (k <= n - 1 ? b1[k] : 0));
+        if (n >= 2)
+          B2[k] = n * (n - 1) *
+                  ((k >= 2 ? b2[k - 2] : 0) - 2 * (k >= 1 && k - 1 <= n - 2 ? b2[k - 1] : 0) + (k <= n - 2 ? b2[k] : 0));
+      }
+    };
+    std::vector<long double> U0, U1, U2, V0, V1, V2;
+    basis(a_, x, U0, U1, U2);
+    basis(b_, y, V0, V1, V2);
+    std::array<long double, 6> r{};
+    for (int i = 0; i <= a_; ++i) {
+      long double s0 = 0, s1 = 0, s2 = 0;
+      for (int j = 0; j <= b_; ++j) {
+        const long double c = L[std::size_t(i) * (b_ + 1) + j];
+        s0 += c * V0[j];
+        s1 += c * V1[j];
+        s2 += c * V2[j];
+      }
+      r[0] += U0[i] * s0;
+      r[1] += U1[i] * s0;
+      r[2] += U0[i] * s1;
+      r[3] += U2[i] * s0;
+      r[4] += U1[i] * s1;
+      r[5] += U0[i] * s2;
+    }
+    return r;
+  }
+
+  // Simplest rational in [lo, hi] (continued fractions), or nothing if its denominator exceeds 2^64.
+  static bool simplest_rational(Rational lo, Rational hi, Rational& out, int depth = 0) {
+    if (depth > 200) return false;
+    Integer fl = floor_of(lo);
+    if (Rational(fl) == lo) {
+      out = lo;
+      return true;
+    }
+    if (Rational(fl + 1) <= hi) {
+      out = Rational(fl + 1);
+      return true;
+    }
+    Rational r;
+    if (!simplest_rational(1 / (hi - Rational(fl)), 1 / (lo - Rational(fl)), r, depth + 1)) return false;
+    out = Rational(fl) + 1 / r;
+    return out.denominator().bit_size() <= 64;
+  }
+  static Integer floor_of(const Rational& q) {
+    Integer f;
+    mpz_fdiv_q(f.mpz(), q.numerator().mpz(), q.denominator().mpz());
+    return f;
+  }
+
+  // D, D_u, D_v at a rational point, exactly.
+  std::array<Rational, 3> exact_jet(const Rational& u, const Rational& v) const {
+    Rational d(0), du(0), dv(0);
+    for (int j = D_.degree(); j >= 0; --j) {
+      Rational p(0), dp(0);
+      if (!CGAL::is_zero(D_[j]))
+        for (int i = D_[j].degree(); i >= 0; --i) {
+          dp = dp * u + p;
+          p = p * u + Rational(D_[j][i]);
+        }
+      dv = dv * v + d;
+      d = d * v + p;
+      du = du * v + dp;
+    }
+    return {d, du, dv};
+  }
+
+  // Resolves box B around a nondegenerate singular or isolated point of D = 0 (conditions (1)-(4) of the header
+  // comment). Returns false (B is then split) when a condition fails for a reason that splitting can cure;
+  // calls fail() when D(p) = 0 can be neither proved nor excluded.
+  bool resolve_singular(const Box& B) {
+    using I = Mpfi_interval;
+    const Interval_grid& g = *B.grid;
+    if (a_ + b_ < 2) return false;
+    // (1) regular Hessian on B
+    const I hxx = hessian_range(g, 0), hxy = hessian_range(g, 1), hyx = hxy, hyy = hessian_range(g, 2);
+    const I det = hxx * hyy - hxy * hyx;
+    if (det.contains_zero()) return false;
+    const bool extremum = det.positive();
+    // floating-point Newton for the critical point (a starting point only)
+    const std::vector<long double> L = long_double_grid(g);
+    long double x = 0.5L, y = 0.5L;
+    for (int it = 0; it < 60; ++it) {
+      const auto j = local_jet(L, x, y);
+      const long double dt = j[3] * j[5] - j[4] * j[4];
+      if (!(std::fabs(dt) > 0)) return false;
+      const long double dx = (j[5] * j[1] - j[4] * j[2]) / dt, dy = (j[3] * j[2] - j[4] * j[1]) / dt;
+      x -= dx;
+      y -= dy;
+      if (!std::isfinite(double(x)) || !std::isfinite(double(y)) || x < -1 || x > 2 || y < -1 || y > 2) return false;
+      if (std::fabs(dx) + std::fabs(dy) < 1e-18L) break;
+    }
+    const long double margin = 1e-6L;
+    if (x < margin || x > 1 - margin || y < margin || y > 1 - margin) return false;
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    const std::array<double, 2> approx{CGAL::to_double(B.u0) + double(x) * CGAL::to_double(wu),
+                                       CGAL::to_double(B.v0) + double(y) * CGAL::to_double(wv)};
+    for (const auto& e : off_curve_)  // a critical point already proved to lie off the curve
+      if (e.contains(approx[0], approx[1])) return false;
+    // (4) the crossings with the edges of B
+    std::vector<Crossing> cr;
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+      return false;
+    for (const Rational* cu : {&B.u0, &B.u1})
+      for (const Rational* cv : {&B.v0, &B.v1})
+        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
+            !corner_crossing(B, *cu, *cv, true, cr))
+          return false;
+    if (cr.size() != (extremum ? 0u : 4u)) return false;
+    // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B
+    const double r0 = 1e-7;
+    std::array<I, 2> X{I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
+                       I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
+    auto value = [&](const std::array<I, 2>& c, std::array<I, 2>& F) {
+      F[0] = grid_value(g, 1, 0, c[0], c[1]);
+      F[1] = grid_value(g, 0, 1, c[0], c[1]);
+    };
+    auto jacobian = [&](const std::array<I, 2>&, std::vector<std::vector<I>>& J) {
+      J[0][0] = hxx;
+      J[0][1] = hxy;
+      J[1][0] = hxy;
+      J[1][1] = hyy;
+    };
+    if (!krawczyk_prove<2>(X, value, jacobian, 12)) return false;
+    const I zero = I::hull(Rational(0), Rational(0), prec_), one = I::hull(Rational(1), Rational(1), prec_);
+    if (!X[0].strictly_inside(I::hull(Rational(0), Rational(1), prec_)) ||
+        !X[1].strictly_inside(I::hull(Rational(0), Rational(1), prec_)))
+      return false;
+    const Parameter_box K{B.u0 + wu * X[0].lower(), B.u0 + wu * X[0].upper(), B.v0 + wv * X[1].lower(),
+                          B.v0 + wv * X[1].upper()};
+    // (3) D(p): nonzero (the box is split as usual), or zero by an exact rational point or the witness
+    if (!grid_value(g, 0, 0, X[0], X[1]).contains_zero()) {
+      off_curve_.push_back(K);
+      return false;
+    }
+    bool zero_proved = false;
+    Rational ru, rv;
+    if (simplest_rational(K.u0, K.u1, ru) && simplest_rational(K.v0, K.v1, rv)) {
+      const auto e = exact_jet(ru, rv);
+      zero_proved = CGAL::is_zero(e[0]) && CGAL::is_zero(e[1]) && CGAL::is_zero(e[2]);
+    }
+    if (!zero_proved && o_.singular_point_witness)
+      zero_proved = o_.singular_point_witness(Parameter_box{B.u0, B.u1, B.v0, B.v1}, approx);
+    if (!zero_proved) {
+      fail("D has a nondegenerate critical point at (" + std::to_string(approx[0]) + ", " + std::to_string(approx[1]) +
+           ") where |D| is below the interval resolution; D = 0 there (a node or an isolated point) could not be "
+           "proved");
+      return false;
+    }
+    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum});
+    const std::size_t ps = node_singular(singular_.size() - 1);
+    for (const Crossing& c : cr) {
+      const std::size_t n = node(c.vertical, c.c, c.index);
+      Arc arc{n, ps, {}};
+      const Curve_topology_vertex q = vertex_of(n);
+      const long double qx = (q.u - CGAL::to_double(B.u0)) / CGAL::to_double(wu),
+                        qy = (q.v - CGAL::to_double(B.v0)) / CGAL::to_double(wv);
+      for (int k = 1; k < o_.samples_per_arc; ++k) {  // points of the segment pulled onto D = 0 (drawing only)
+        const long double f = (long double)k / o_.samples_per_arc;
+        long double px = qx + f * (x - qx), py = qy + f * (y - qy);
+        for (int it = 0; it < 8; ++it) {
+          const auto j = local_jet(L, px, py);
+          const long double n2 = j[1] * j[1] + j[2] * j[2];
+          if (!(n2 > 0)) break;
+          const long double nx = px - j[0] * j[1] / n2, ny = py - j[0] * j[2] / n2;
+          if (!(nx >= 0 && nx <= 1 && ny >= 0 && ny <= 1)) break;
+          px = nx;
+          py = ny;
+        }
+        arc.inner.push_back({CGAL::to_double(B.u0) + double(px) * CGAL::to_double(wu),
+                             CGAL::to_double(B.v0) + double(py) * CGAL::to_double(wv)});
+      }
+      arcs_.push_back(arc);
+    }
+    (void)zero;
+    (void)one;
+    return true;
+  }
+
+  std::size_t node_singular(std::size_t index) {
+    Node_key k{false, Rational(0), int(index), true};
+    auto it = nodes_.find(k);
+    if (it != nodes_.end()) return it->second;
+    keys_.push_back(k);
+    return nodes_[k] = keys_.size() - 1;
+  }
+
   long double eval(long double u, long double v) const {
     long double r = 0;
     for (int i = a_; i >= 0; --i) {
@@ -510,6 +870,18 @@ class Subdivision_topology {
 
   Curve_topology_vertex vertex_of(std::size_t n) const {
     const Node_key& k = keys_[n];
+    if (k.singular) {
+      const Singular_point& p = singular_[std::size_t(k.index)];
+      Curve_topology_vertex v;
+      v.u_lo = CGAL::to_interval(p.u_lo).first;
+      v.u_hi = CGAL::to_interval(p.u_hi).second;
+      v.v_lo = CGAL::to_interval(p.v_lo).first;
+      v.v_hi = CGAL::to_interval(p.v_hi).second;
+      v.u = 0.5 * (v.u_lo + v.u_hi);
+      v.v = 0.5 * (v.v_lo + v.v_hi);
+      v.kind = p.isolated ? Curve_topology_vertex::isolated : Curve_topology_vertex::singular;
+      return v;
+    }
     const Line& L = lines_.at(std::make_pair(k.vertical, k.c));
     const Algebraic_real& x = L.roots[std::size_t(k.index)].root;
     x.refine_to_width(Rational(1, 1 << 30) * Rational(1, 1 << 10));
@@ -529,6 +901,7 @@ class Subdivision_topology {
 
   bool on_domain_boundary(std::size_t n) const {
     const Node_key& k = keys_[n];
+    if (k.singular) return false;
     return k.vertical ? (k.c == box_.u0 || k.c == box_.u1) : (k.c == box_.v0 || k.c == box_.v1);
   }
 
@@ -540,8 +913,10 @@ class Subdivision_topology {
       at[arcs_[k].n0].push_back(k);
       at[arcs_[k].n1].push_back(k);
     }
+    auto is_stop = [&](std::size_t n) { return on_domain_boundary(n) || keys_[n].singular; };
     for (std::size_t n = 0; n < keys_.size(); ++n) {
-      const std::size_t want = on_domain_boundary(n) ? 1 : 2;
+      const std::size_t want =
+          on_domain_boundary(n) ? 1 : (keys_[n].singular ? (singular_[std::size_t(keys_[n].index)].isolated ? 0 : 4) : 2);
       if (at[n].size() != want) {
         fail("inconsistent subdivision: a crossing joins " + std::to_string(at[n].size()) + " arcs");
         return false;
@@ -577,7 +952,7 @@ class Subdivision_topology {
       std::size_t n = start;
       for (;;) {
         n = walk(n, k, e.polyline);
-        if (on_domain_boundary(n) || (stop_at_target && n == target)) break;
+        if (is_stop(n) || (stop_at_target && n == target)) break;
         if (used[at[n][0]] && used[at[n][1]]) break;  // back at the start of a cycle
         e.polyline.push_back(point(n));
         k = used[at[n][0]] ? at[n][1] : at[n][0];
@@ -588,7 +963,17 @@ class Subdivision_topology {
       return n;
     };
     for (std::size_t n = 0; n < keys_.size(); ++n)
-      if (on_domain_boundary(n) && !used[at[n][0]]) chain(n, at[n][0], false, n);
+      if (keys_[n].singular && singular_[std::size_t(keys_[n].index)].isolated) {  // an acnode: its own component
+        Curve_topology_component c;
+        c.closed = true;
+        c.isolated_point = true;
+        c.vertices.push_back(vertex(n));
+        out.components.push_back(c);
+      }
+    for (std::size_t n = 0; n < keys_.size(); ++n)
+      if (is_stop(n))
+        for (std::size_t k : at[n])
+          if (!used[k]) chain(n, k, false, n);
     for (std::size_t k = 0; k < arcs_.size(); ++k) {
       if (used[k]) continue;
       // a cycle: count its nodes, then split it into two edges at the start and half-way
@@ -627,6 +1012,8 @@ class Subdivision_topology {
   std::map<Node_key, std::size_t> nodes_;
   std::vector<Node_key> keys_;
   std::vector<Arc> arcs_;
+  std::vector<Singular_point> singular_;
+  std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
   bool failed_ = false;
   std::string failure_;
 };

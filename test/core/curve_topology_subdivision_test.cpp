@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <bezoutian/Curve_topology_by_subdivision.h>
+#include <bezoutian/internal/interval_krawczyk.h>
 
 using namespace bezoutian;
 using Q = Rational;
@@ -106,25 +107,106 @@ TEST_CASE("subdivision: curves meeting the boundary, through domain corners", "[
   CHECK(r.topology.components.empty());
 }
 
-TEST_CASE("subdivision: singular and isolated points are not certified (the caller needs an exact analysis)",
+TEST_CASE("subdivision: an ordinary node and an isolated point at rational points are certified exactly",
           "[topology][subdivision]") {
-  // a node at (1/2, 1/2)
-  auto r = subdivide_curve_in_box((u - v) * (u + v - 1), Parameter_box{});
+  // the diagonals of the unit square cross at (1/2, 1/2): one component, four boundary points (the domain corners)
+  const P2 X = (u - v) * (u + v - 1);
+  auto r = subdivide_curve_in_box(X, Parameter_box{});
+  REQUIRE(r.certified);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(r.topology.number_of_boundary_points() == 4);
+  REQUIRE(r.topology.number_of_singular_points() == 1);
+  for (const auto& w : r.topology.vertices)
+    if (w.kind == Curve_topology_vertex::singular) {
+      CHECK(w.branches == 2);
+      CHECK(w.u_lo <= 0.5);
+      CHECK(0.5 <= w.u_hi);
+      CHECK(w.v_lo <= 0.5);
+      CHECK(0.5 <= w.v_hi);
+    }
+  check_samples(X, r.topology, 1e-9);
+  // an acnode at (1/3, 1/3) and a circle around (3/4, 3/4) of radius 1/8: two components, one an isolated point
+  const P2 A = ((3 * u - 1) * (3 * u - 1) + (3 * v - 1) * (3 * v - 1)) *
+               ((8 * u - 6) * (8 * u - 6) + (8 * v - 6) * (8 * v - 6) - 1);
+  r = subdivide_curve_in_box(A, Parameter_box{});
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.components.size() == 2);
+  std::size_t isolated = 0;
+  for (const auto& c : r.topology.components) isolated += c.isolated_point;
+  CHECK(isolated == 1);
+  CHECK(closed_components(r.topology) == 2);
+  // a figure eight (lemniscate of Gerono, centred at (1/2, 1/2)): one closed component through one node
+  const P2 x = 4 * u - 2, y = 4 * v - 2;  // x^4 = x^2 - y^2 in coordinates scaled to the box
+  const P2 G = x * x * x * x - x * x + y * y;
+  r = subdivide_curve_in_box(G, Parameter_box{});
+  REQUIRE(r.certified);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 1);
+  CHECK(r.topology.number_of_singular_points() == 1);
+  check_samples(G, r.topology, 1e-9);
+}
+
+TEST_CASE("subdivision: irrational nodes are certified by a witness, and not certified without one",
+          "[topology][subdivision]") {
+  // two circles crossing at two irrational points (u + v = 11/16, u^2 + v^2 = 1/4)
+  const P2 c1 = 16 * u * u - 16 * u + 16 * v * v - 16 * v + 7, c2 = 4 * u * u + 4 * v * v - 1;
+  auto r = subdivide_curve_in_box(c1 * c2, Parameter_box{});
+  CHECK_FALSE(r.certified);
+  CHECK(r.reason.find("could not be proved") != std::string::npos);
+  // witness: Krawczyk's test proves a transversal common point of c1 = 0 and c2 = 0 in the box (two branches with
+  // distinct tangents through it), independently of the subdivision's own analysis
+  int calls = 0;
+  Subdivision_topology_options o;
+  o.singular_point_witness = [&](const Parameter_box& b, const std::array<double, 2>& p) {
+    ++calls;
+    using I = internal::Mpfi_interval;
+    std::array<I, 2> X{I::hull(Q(p[0] - 1e-6), Q(p[0] + 1e-6), 128), I::hull(Q(p[1] - 1e-6), Q(p[1] + 1e-6), 128)};
+    auto ev = [](const P2& f, const I& x, const I& y) {
+      I r = I::point(0, 128);
+      for (int j = f.degree(); j >= 0; --j) r = r * y + I::horner(f[j], x);
+      return r;
+    };
+    auto value = [&](const std::array<I, 2>& c, std::array<I, 2>& F) {
+      F[0] = ev(c1, c[0], c[1]);
+      F[1] = ev(c2, c[0], c[1]);
+    };
+    auto jac = [&](const std::array<I, 2>& Z, std::vector<std::vector<I>>& J) {
+      J[0][0] = ev(CGAL::differentiate(c1), Z[0], Z[1]);  // d/du: the inner variable
+      J[0][1] = ev(CGAL::canonicalize(CGAL::differentiate(CGAL::swap(c1, 0, 1))), Z[1], Z[0]);
+      J[1][0] = ev(CGAL::differentiate(c2), Z[0], Z[1]);
+      J[1][1] = ev(CGAL::canonicalize(CGAL::differentiate(CGAL::swap(c2, 0, 1))), Z[1], Z[0]);
+    };
+    return internal::krawczyk_prove<2>(X, value, jac) && X[0].strictly_inside(I::hull(b.u0, b.u1, 128)) &&
+           X[1].strictly_inside(I::hull(b.v0, b.v1, 128));
+  };
+  r = subdivide_curve_in_box(c1 * c2, Parameter_box{}, o);
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(calls >= 2);
+  CHECK(r.topology.number_of_singular_points() == 2);
+  // c2's arc from (1/2, 0) to (0, 1/2) and c1 (a closed circle) meet twice: one component
+  CHECK(r.topology.components.size() == 1);
+  CHECK(r.topology.number_of_boundary_points() == 2);
+  for (const auto& w : r.topology.vertices)
+    if (w.kind == Curve_topology_vertex::singular) {
+      CHECK(w.branches == 2);
+      CHECK(std::abs(w.u + w.v - 11.0 / 16) < 1e-9);
+    }
+}
+
+TEST_CASE("subdivision: degenerate singular points are not certified (the caller needs an exact analysis)",
+          "[topology][subdivision]") {
+  // a triple point at (1/2, 1/2) (three lines: the Hessian vanishes there)
+  auto r = subdivide_curve_in_box((u - v) * (u + v - 1) * (2 * u - 1), Parameter_box{});
   CHECK_FALSE(r.certified);
   CHECK_FALSE(r.reason.empty());
   REQUIRE_FALSE(r.unresolved.empty());
-  for (const auto& b : r.unresolved) {
-    CHECK(b.u0 <= Q(1, 2));
-    CHECK(Q(1, 2) <= b.u1);
-    CHECK(b.v0 <= Q(1, 2));
-    CHECK(Q(1, 2) <= b.v1);
+  for (const auto& b : r.unresolved) {  // the box that stopped it is at (or next to) the triple point
+    CHECK(CGAL::abs(b.u0 - Q(1, 2)) < Q(1, 1000000));
+    CHECK(CGAL::abs(b.v0 - Q(1, 2)) < Q(1, 1000000));
   }
-  // an isolated real point (acnode) at (1/3, 1/3)
-  r = subdivide_curve_in_box((3 * u - 1) * (3 * u - 1) + (3 * v - 1) * (3 * v - 1), Parameter_box{});
-  CHECK_FALSE(r.certified);
-  // two circles crossing: two nodes
-  const P2 c1 = 16 * u * u - 16 * u + 16 * v * v - 16 * v + 7, c2 = 4 * u * u + 4 * v * v - 1;
-  r = subdivide_curve_in_box(c1 * c2, Parameter_box{});
+  // a cusp at (1/3, 1/3): (3v - 1)^2 = (3u - 1)^3
+  r = subdivide_curve_in_box((3 * v - 1) * (3 * v - 1) - (3 * u - 1) * (3 * u - 1) * (3 * u - 1), Parameter_box{});
   CHECK_FALSE(r.certified);
   // bad input
   CHECK_THROWS_AS(subdivide_curve_in_box(P2(0), Parameter_box{}), Invalid_input);

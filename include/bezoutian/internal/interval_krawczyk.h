@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace bezoutian {
 namespace internal {
@@ -90,6 +91,21 @@ class Mpfi_interval {
     return d;
   }
   mpfr_prec_t prec() const { return mpfi_get_prec(v_); }
+  mpfi_srcptr get() const { return v_; }
+  mpfi_ptr get() { return v_; }
+  /// True iff this interval lies in the interior of `outer`.
+  bool strictly_inside(const Mpfi_interval& outer) const { return mpfi_is_strictly_inside(v_, outer.v_) > 0; }
+  double width_double() const {
+    mpfr_t w;
+    mpfr_init2(w, prec());
+    mpfi_diam_abs(w, v_);
+    const double d = mpfr_get_d(w, MPFR_RNDU);
+    mpfr_clear(w);
+    return d;
+  }
+  /// Exact rational end points.
+  Rational lower() const { return end(true); }
+  Rational upper() const { return end(false); }
 
   friend Mpfi_interval operator+(const Mpfi_interval& a, const Mpfi_interval& b) {
     Mpfi_interval r(std::max(a.prec(), b.prec()));
@@ -126,8 +142,86 @@ class Mpfi_interval {
   }
 
  private:
+  Rational end(bool left) const {
+    mpfr_t e;
+    mpfr_init2(e, prec());
+    if (left)
+      mpfi_get_left(e, v_);
+    else
+      mpfi_get_right(e, v_);
+    mpq_t q;
+    mpq_init(q);
+    mpfr_get_q(q, e);
+    Rational r(q);
+    mpq_clear(q);
+    mpfr_clear(e);
+    return r;
+  }
   mpfi_t v_;
 };
+
+/// Krawczyk's test in R^N (Krawczyk 1969; Moore 1977). `value(c, F)` writes an enclosure of F(c) for the point
+/// box c (the midpoint of X), `jacobian(X, J)` an enclosure of F' over the box X (J[i][j] = dF_i/dx_j). With Y the
+/// inverse of the midpoint of J,
+///   K(X) = c - Y F(c) + (I - Y F'(X)) (X - c);
+/// K(X) in the interior of X proves that X holds exactly one zero of F and that F' is regular there (the zero is
+/// simple). `jacobian` receives an N x N std::vector<std::vector<Mpfi_interval>>. Returns true only with that proof; then X is replaced by K(X) and contracted `iterations` more times
+/// (X <- K(X) ∩ X keeps the zero: every zero in X lies in K(X)).
+template <std::size_t N, class Value, class Jacobian>
+bool krawczyk_prove(std::array<Mpfi_interval, N>& X, Value value, Jacobian jacobian, int iterations = 0) {
+  using I = Mpfi_interval;
+  const mpfr_prec_t prec = X[0].prec();
+  for (int round = 0; round <= iterations; ++round) {
+    std::array<I, N> c = X, F = X;
+    for (std::size_t i = 0; i < N; ++i) c[i] = X[i].midpoint();
+    value(c, F);
+    std::vector<std::vector<I>> J(N, std::vector<I>(N, I::point(0, prec)));
+    jacobian(X, J);
+    // Y = mid(J)^-1 by Gauss-Jordan with partial pivoting (any Y gives a valid test; a good one a sharp one)
+    double M[N][2 * N];
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j) {
+        M[i][j] = J[i][j].mid_double();
+        M[i][N + j] = i == j ? 1.0 : 0.0;
+      }
+    for (std::size_t col = 0; col < N; ++col) {
+      std::size_t piv = col;
+      for (std::size_t r = col + 1; r < N; ++r)
+        if (std::fabs(M[r][col]) > std::fabs(M[piv][col])) piv = r;
+      if (!(std::fabs(M[piv][col]) > 0) || !std::isfinite(M[piv][col])) return round > 0;
+      for (std::size_t j = 0; j < 2 * N; ++j) std::swap(M[col][j], M[piv][j]);
+      const double d = M[col][col];
+      for (std::size_t j = 0; j < 2 * N; ++j) M[col][j] /= d;
+      for (std::size_t r = 0; r < N; ++r)
+        if (r != col && M[r][col] != 0) {
+          const double f = M[r][col];
+          for (std::size_t j = 0; j < 2 * N; ++j) M[r][j] -= f * M[col][j];
+        }
+    }
+    std::array<I, N> K = X;
+    bool inside = true;
+    for (std::size_t i = 0; i < N; ++i) {
+      I k = c[i];
+      for (std::size_t j = 0; j < N; ++j) k = k - M[i][N + j] * F[j];
+      for (std::size_t l = 0; l < N; ++l) {
+        I m = I::point(i == l ? 1.0 : 0.0, prec);
+        for (std::size_t j = 0; j < N; ++j) m = m - M[i][N + j] * J[j][l];
+        k = k + m * (X[l] - c[l]);
+      }
+      if (!std::isfinite(k.width_double())) return round > 0;
+      if (round == 0 && !k.strictly_inside(X[i])) inside = false;
+      K[i] = k;
+    }
+    if (round == 0 && !inside) return false;
+    for (std::size_t i = 0; i < N; ++i) {
+      I r(prec);
+      mpfi_intersect(r.get(), K[i].get(), X[i].get());
+      if (mpfi_is_empty(r.get())) return true;  // cannot happen after a proof; keep X
+      X[i] = r;
+    }
+  }
+  return true;
+}
 
 /// Values and derivatives of a homogeneous plane form (W, X, Y)(u) on an interval.
 struct Form_enclosure {
