@@ -12,6 +12,8 @@
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/internal/arr_bezier_exact.h>
 
+#include <CGAL/Interval_nt.h>
+
 #include <CGAL/enum.h>
 #include <CGAL/tags.h>
 #include <CGAL/Arr_enums.h>
@@ -26,6 +28,30 @@
 #include <ostream>
 #include <utility>
 #include <vector>
+
+#ifdef BEZOUTIAN_ARR_PROFILE
+#include <chrono>
+#include <cstdio>
+namespace bezoutian { namespace internal {
+struct Arr_profile {
+  const char* name; long n = 0; double ms = 0;
+  explicit Arr_profile(const char* s) : name(s) {}
+  ~Arr_profile() { std::fprintf(stderr, "%-24s %8ld calls %9.2f ms\n", name, n, ms); }
+};
+struct Arr_timer {
+  Arr_profile& p; std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Arr_timer(Arr_profile& q) : p(q) { ++p.n; }
+  ~Arr_timer() { p.ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+};
+}}
+#define BEZOUTIAN_ARR_CAT2(a, b) a##b
+#define BEZOUTIAN_ARR_CAT(a, b) BEZOUTIAN_ARR_CAT2(a, b)
+#define BEZOUTIAN_ARR_TIME(name)                                                    \
+  static internal::Arr_profile BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__)(name);        \
+  internal::Arr_timer BEZOUTIAN_ARR_CAT(arr_timer_, __LINE__)(BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__))
+#else
+#define BEZOUTIAN_ARR_TIME(name)
+#endif
 
 namespace bezoutian {
 
@@ -63,6 +89,7 @@ class Arr_bezier_point_2 {
   const Algebraic_real& coordinate(int k) const {
     Rep& r = *rep_;
     if (!r.known[k]) {
+      BEZOUTIAN_ARR_TIME("exact coordinate");
       const Origin& o = r.origins.front();
       r.c[k] = internal::arr_value_at(o.first->num[k], o.first->den[k], o.second);
       r.known[k] = true;
@@ -274,51 +301,53 @@ class Arr_rational_bezier_traits_2 {
   };
 
   /// Intersections of the supporting curves a and b (a == b: self-intersections, s < t), oriented so that s is
-  /// the parameter on a. Computed once per unordered pair.
-  Pair_entry intersections(const std::shared_ptr<const Supporting>& a, const std::shared_ptr<const Supporting>& b) const {
-    const bool swap = a->id > b->id;
-    const auto key = swap ? std::make_pair(b->id, a->id) : std::make_pair(a->id, b->id);
+  /// the parameter on a. Computed once per unordered pair (both orientations are cached). Pairs whose piece
+  /// boxes are disjoint, and curves proved simple (Arr_bezier_supporting_curve::simple), need no elimination.
+  const Pair_entry& intersections(const std::shared_ptr<const Supporting>& a, const std::shared_ptr<const Supporting>& b) const {
+    BEZOUTIAN_ARR_TIME("intersections()");
+    const auto key = std::make_pair(a->id, b->id);
     auto it = cache_->pairs.find(key);
-    if (it == cache_->pairs.end()) {
-      const auto& A = swap ? b : a;
-      const auto& B = swap ? a : b;
-      Curve_intersection_result r;
-      // With positive weights each curve lies in the box of its control points (convex hull property).
-      const bool disjoint = A != B && (A->box[1] < B->box[0] || B->box[1] < A->box[0] || A->box[3] < B->box[2] ||
-                                       B->box[3] < A->box[2]);
-      if (disjoint || (A == B && A->linear)) {  // (an arc of a line segment has no self-intersection)
-        it = cache_->pairs.emplace(key, Pair_entry()).first;
-        return it->second;
+    if (it != cache_->pairs.end()) return it->second;
+    auto rit = cache_->pairs.find(std::make_pair(b->id, a->id));
+    if (rit != cache_->pairs.end()) {
+      Pair_entry e = rit->second;
+      for (auto& c : e.points) std::swap(c.s, c.t);
+      for (auto& o : e.overlaps) {
+        std::swap(o.s0, o.t0);
+        std::swap(o.s1, o.t1);
       }
-      try {
-        r = A == B ? self_intersections(A->curve) : intersect_curves(A->curve, B->curve);
-      } catch (const Invalid_input&) {
-        throw;
-      } catch (const Error& e) {
-        throw Invalid_input(std::string("Arr_rational_bezier_traits_2: unsupported input: ") + e.what());
-      }
-      Pair_entry e;
-      for (const auto& ip : r.points) {
-        Point_2 p(A, ip.s);
-        p.add_origin(B, ip.t);
-        e.points.push_back({p, ip.s, ip.t, ip.tangent});
-      }
-      for (const auto& o : r.overlaps) e.overlaps.push_back({o.s0, o.s1, o.t0, o.t1});
-      it = cache_->pairs.emplace(key, std::move(e)).first;
+      return cache_->pairs.emplace(key, std::move(e)).first->second;
     }
-    if (!swap) return it->second;
-    Pair_entry e = it->second;
-    for (auto& c : e.points) std::swap(c.s, c.t);
-    for (auto& o : e.overlaps) {
-      std::swap(o.s0, o.t0);
-      std::swap(o.s1, o.t1);
+    BEZOUTIAN_ARR_TIME("pair computed");
+    // With positive weights each piece lies in the box of its control points (convex hull property).
+    const bool disjoint = a != b && internal::arr_pieces_disjoint(*a, *b, 0, 0, 0);
+    if (disjoint || (a == b && (a->linear || a->simple)))  // (an arc of a line segment has no self-intersection)
+      return cache_->pairs.emplace(key, Pair_entry()).first->second;
+    Curve_intersection_result r;
+    try {
+      BEZOUTIAN_ARR_TIME("intersect_curves/self");
+      r = a == b ? self_intersections(a->curve) : intersect_curves(a->curve, b->curve);
+    } catch (const Invalid_input&) {
+      throw;
+    } catch (const Error& e) {
+      throw Invalid_input(std::string("Arr_rational_bezier_traits_2: unsupported input: ") + e.what());
     }
-    return e;
+    Pair_entry e;
+    for (const auto& ip : r.points) {
+      Point_2 p(a, ip.s);
+      p.add_origin(b, ip.t);
+      e.points.push_back({p, ip.s, ip.t, ip.tangent});
+    }
+    for (const auto& o : r.overlaps) e.overlaps.push_back({o.s0, o.s1, o.t0, o.t1});
+    return cache_->pairs.emplace(key, std::move(e)).first->second;
   }
 
   // ------------------------------------------------------------------------------------------- basic predicates
-  static int cmp_x(const Point_2& p, const Point_2& q) { return compare_coordinate(p, q, 0); }
+  static int cmp_x(const Point_2& p, const Point_2& q) {
+    BEZOUTIAN_ARR_TIME("Compare_x");
+    return compare_coordinate(p, q, 0); }
   static int cmp_xy(const Point_2& p, const Point_2& q) {
+    BEZOUTIAN_ARR_TIME("Compare_xy");
     if (p.is_same(q)) return 0;
     const int c = compare_coordinate(p, q, 0);
     return c != 0 ? c : compare_coordinate(p, q, 1);
@@ -348,6 +377,7 @@ class Arr_rational_bezier_traits_2 {
 
   /// Parameter of the arc at the point p (p on the arc, or at least x(p) in its x-range for non-vertical arcs).
   static Algebraic_real parameter_of(const X_monotone_curve_2& c, const Point_2& p) {
+    BEZOUTIAN_ARR_TIME("parameter_of");
     for (const auto& o : p.origins())
       if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return o.second;
     if (cmp_xy(p, c.point_at_min_parameter()) == 0) return c.parameter_min();
@@ -402,6 +432,7 @@ class Arr_rational_bezier_traits_2 {
 
   /// Sign of y(p) - y(arc at x(p)) (p in the x-range of the non-vertical arc).
   static int compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
+    BEZOUTIAN_ARR_TIME("Compare_y_at_x_2");
     if (c.is_vertical()) {
       if (compare_coordinate(p, c.left(), 1) < 0) return -1;
       return compare_coordinate(p, c.right(), 1) > 0 ? 1 : 0;
@@ -433,14 +464,62 @@ class Arr_rational_bezier_traits_2 {
     return internal::arr_value_at(c.supporting()->num[1], c.supporting()->den[1], r[0]);
   }
 
+  /// Enclosure of the slope dy/dx = (Y'W - YW')/(X'W - XW') of the non-vertical arc c at its point p (false if
+  /// p's parameter on c is not at hand or the enclosure of dx/dt contains 0).
+  static bool slope_at(const X_monotone_curve_2& c, const Point_2& p, double& lo, double& hi) {
+    const Algebraic_real* t = nullptr;
+    if (p.is_same(c.point_at_min_parameter())) t = &c.parameter_min();
+    else if (p.is_same(c.point_at_max_parameter())) t = &c.parameter_max();
+    else {
+      for (const auto& o : p.origins())
+        if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) {
+          t = &o.second;
+          break;
+        }
+      if (!t) {
+        if (cmp_xy(p, c.point_at_min_parameter()) == 0) t = &c.parameter_min();
+        else if (cmp_xy(p, c.point_at_max_parameter()) == 0) t = &c.parameter_max();
+        else return false;
+      }
+    }
+    if (!t->is_rational() && CGAL::to_double(t->upper() - t->lower()) > 1e-12)
+      t->refine_to_width(Rational(std::ldexp(1.0, -42)));
+    typedef CGAL::Interval_nt<false> I;
+    typename I::Protector guard;
+    const I u = t->is_rational() ? I(CGAL::to_interval(t->rational_value()))
+                                 : I(CGAL::to_interval(t->lower()).first, CGAL::to_interval(t->upper()).second);
+    auto ev = [&](const internal::Ci_poly1& f) {
+      if (f.degree() < 0 || CGAL::is_zero(f)) return I(0);
+      I v(CGAL::to_interval(f[f.degree()]));
+      for (int i = f.degree() - 1; i >= 0; --i) v = v * u + I(CGAL::to_interval(f[i]));
+      return v;
+    };
+    const Supporting& S = *c.supporting();
+    const I dx = ev(S.speed[0]), dy = ev(S.speed[1]);
+    if (!(dx.inf() > 0) && !(dx.sup() < 0)) return false;
+    const I q = dy / dx;
+    if (!std::isfinite(q.inf()) || !std::isfinite(q.sup())) return false;
+    lo = q.inf();
+    hi = q.sup();
+    return true;
+  }
+
   /// Order of two non-vertical arcs through p just right (right = true) or left of p. A rational abscissa x* is
   /// chosen strictly between x(p) and every other abscissa where the supporting curves meet or an arc ends, so
   /// that the two arcs neither cross nor end on the open slab between x(p) and x*; comparing their exact
   /// ordinates at x* gives the answer (equal ordinates there mean an overlap, hence EQUAL).
   int compare_y_near(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Point_2& p, bool right) const {
+    BEZOUTIAN_ARR_TIME("Compare_y_at_x_l/r");
     const int dir = right ? 1 : -1;
     // A vertical arc at p lies (lexicographically) just above p on the right side, just below it on the left.
     if (c1.is_vertical() || c2.is_vertical()) return (int(c1.is_vertical()) - int(c2.is_vertical())) * dir;
+    // Filter: both arcs pass through p; if their slopes there differ, the first-order Taylor expansion orders
+    // them near p (the steeper arc is above on the right, below on the left).
+    double sl1, sh1, sl2, sh2;
+    if (slope_at(c1, p, sl1, sh1) && slope_at(c2, p, sl2, sh2)) {
+      if (sh1 < sl2) return -dir;
+      if (sh2 < sl1) return dir;
+    }
     // the nearest abscissa beyond p where something happens, as a point
     Point_2 bound = right ? (cmp_x(c1.right(), c2.right()) < 0 ? c1.right() : c2.right())
                           : (cmp_x(c1.left(), c2.left()) > 0 ? c1.left() : c2.left());
@@ -451,7 +530,7 @@ class Arr_rational_bezier_traits_2 {
       const int side = cmp_x(q, p) * dir;
       if (side > 0 && cmp_x(q, bound) * dir < 0) bound = q;
     };
-    const Pair_entry e = intersections(c1.supporting(), c2.supporting());
+    const Pair_entry& e = intersections(c1.supporting(), c2.supporting());
     for (const auto& ip : e.points) consider(ip.p);
     for (const auto& o : e.overlaps)
       for (const Algebraic_real* t : {&o.s0, &o.s1}) consider(Point_2(c1.supporting(), *t));
@@ -527,6 +606,7 @@ class Arr_rational_bezier_traits_2 {
    public:
     template <class OutputIterator>
     OutputIterator operator()(const Curve_2& c, OutputIterator oi) const {
+    BEZOUTIAN_ARR_TIME("Make_x_monotone_2");
       using Result = boost::variant<Point_2, X_monotone_curve_2>;
       // With positive weights the curve is a single point iff all control points coincide: an isolated point.
       bool point = true;
@@ -577,6 +657,7 @@ class Arr_rational_bezier_traits_2 {
   class Split_2 {
    public:
     void operator()(const X_monotone_curve_2& c, const Point_2& p, X_monotone_curve_2& c1, X_monotone_curve_2& c2) const {
+    BEZOUTIAN_ARR_TIME("Split_2");
       const Algebraic_real t = parameter_of(c, p);
       X_monotone_curve_2 a = make_arc(c.supporting(), c.parameter_min(), t, c.point_at_min_parameter(), p);
       X_monotone_curve_2 b = make_arc(c.supporting(), t, c.parameter_max(), p, c.point_at_max_parameter());
@@ -598,6 +679,7 @@ class Arr_rational_bezier_traits_2 {
   /// interior of both arcs and 0 = unknown otherwise) and overlapping sub-arcs.
   template <class OutputIterator>
   OutputIterator intersect(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, OutputIterator oi) const {
+    BEZOUTIAN_ARR_TIME("Intersect_2");
     using Ip = std::pair<Point_2, Multiplicity>;
     using Result = boost::variant<Ip, X_monotone_curve_2>;
     std::vector<std::pair<Point_2, Result>> out;  // key: lexicographic position
@@ -609,7 +691,7 @@ class Arr_rational_bezier_traits_2 {
     };
     const auto& A = c1.supporting();
     const auto& B = c2.supporting();
-    const Pair_entry e = intersections(A, B);
+    const Pair_entry& e = intersections(A, B);
     if (A == B) {
       if (c1.parameter_min() == c2.parameter_min() && c1.parameter_max() == c2.parameter_max()) {
         *oi++ = Result(c1);

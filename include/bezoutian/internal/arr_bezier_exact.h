@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -33,7 +34,124 @@ struct Arr_bezier_supporting_curve {
   bool vertical = false;             // x constant
   bool linear = false;               // the image lies on a line (collinear control points)
   std::array<Rational, 4> box;       // xmin, xmax, ymin, ymax of the control points (encloses the curve)
+  /// Boxes (xmin, xmax, ymin, ymax; outward-rounded doubles) enclosing the pieces C([i/2^d, (i+1)/2^d]),
+  /// d = 0..box_depth, stored level by level (piece i of level d at index 2^d - 1 + i): control boxes of the
+  /// interval de Casteljau halves (convex hull property, positive weights).
+  static constexpr int box_depth = 4;
+  std::vector<std::array<double, 4>> piece_boxes;
+  /// Proved free of self-intersections: some direction v has v . C'(t) >= 0 on [0,1] (Bernstein coefficients
+  /// of v . (X'W - XW', Y'W - YW') all >= 0), so v . C(t) is strictly increasing.
+  bool simple = false;
 };
+
+/// Interval de Casteljau subdivision of the homogeneous net (w, wx, wy) for the piece boxes.
+inline void arr_piece_boxes(Arr_bezier_supporting_curve& s) {
+  typedef CGAL::Interval_nt<false> I;
+  typename I::Protector guard;
+  using Net = std::vector<std::array<I, 3>>;
+  Net net;
+  for (const auto& h : s.curve.homogeneous_control_points())
+    net.push_back({I(CGAL::to_interval(h[0])), I(CGAL::to_interval(h[1])), I(CGAL::to_interval(h[2]))});
+  const int depth = Arr_bezier_supporting_curve::box_depth;
+  s.piece_boxes.assign((std::size_t(1) << (depth + 1)) - 1, {{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL}});
+  const I half(0.5);
+  std::vector<Net> level{net};
+  for (int d = 0; d <= depth; ++d) {
+    std::vector<Net> next;
+    for (std::size_t i = 0; i < level.size(); ++i) {
+      const Net& q = level[i];
+      std::array<double, 4> b{{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL}};
+      bool ok = true;
+      for (const auto& h : q) {
+        if (!(h[0].inf() > 0)) { ok = false; break; }
+        const I x = h[1] / h[0], y = h[2] / h[0];
+        b[0] = std::min(b[0], x.inf());
+        b[1] = std::max(b[1], x.sup());
+        b[2] = std::min(b[2], y.inf());
+        b[3] = std::max(b[3], y.sup());
+      }
+      if (ok && std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]))
+        s.piece_boxes[(std::size_t(1) << d) - 1 + i] = b;
+      if (d == depth) continue;
+      // halves at 1/2: the de Casteljau triangle
+      Net tri = q, left, right;
+      const std::size_t n = q.size();
+      left.push_back(tri[0]);
+      right.push_back(tri[n - 1]);
+      for (std::size_t r = 1; r < n; ++r) {
+        for (std::size_t j = 0; j + r < n; ++j)
+          for (int k = 0; k < 3; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
+        left.push_back(tri[0]);
+        right.push_back(tri[n - 1 - r]);
+      }
+      std::reverse(right.begin(), right.end());
+      next.push_back(left);
+      next.push_back(right);
+    }
+    level.swap(next);
+  }
+}
+
+/// True if the pieces of a (level d, index i) and b (level d, index j) are proved disjoint by the piece boxes.
+inline bool arr_pieces_disjoint(const Arr_bezier_supporting_curve& a, const Arr_bezier_supporting_curve& b, int d,
+                                std::size_t i, std::size_t j) {
+  const auto& p = a.piece_boxes[(std::size_t(1) << d) - 1 + i];
+  const auto& q = b.piece_boxes[(std::size_t(1) << d) - 1 + j];
+  if (p[1] < q[0] || q[1] < p[0] || p[3] < q[2] || q[3] < p[2]) return true;
+  if (d == Arr_bezier_supporting_curve::box_depth) return false;
+  for (std::size_t u = 0; u < 2; ++u)
+    for (std::size_t v = 0; v < 2; ++v)
+      if (!arr_pieces_disjoint(a, b, d + 1, 2 * i + u, 2 * j + v)) return false;
+  return true;
+}
+
+/// Bernstein coefficients (degree = deg f, or 0 for f = 0) of an integer polynomial on [0,1], exact.
+inline std::vector<Rational> arr_bernstein(const Ci_poly1& f, int n) {
+  std::vector<Rational> b(n + 1, Rational(0));
+  // b_j = sum_{i <= j} C(j,i) / C(n,i) a_i
+  std::vector<Rational> cn(n + 1);
+  Rational c(1);
+  for (int i = 0; i <= n; ++i) {
+    cn[i] = c;
+    c = c * Rational(n - i) / Rational(i + 1);
+  }
+  for (int j = 0; j <= n; ++j) {
+    Rational cj(1);
+    for (int i = 0; i <= j; ++i) {
+      if (i <= f.degree()) b[j] += cj / cn[i] * Rational(f[i]);
+      cj = cj * Rational(j - i) / Rational(i + 1);
+    }
+  }
+  return b;
+}
+
+/// The test behind Arr_bezier_supporting_curve::simple: the hodograph's Bernstein coefficient vectors lie in a
+/// closed half-plane {v . d >= 0} (v proposed in doubles from the largest angular gap, checked exactly).
+inline bool arr_is_simple(const Arr_bezier_supporting_curve& s) {
+  const int n = std::max(s.speed[0].degree(), s.speed[1].degree());
+  if (n < 0) return false;
+  const std::vector<Rational> bx = arr_bernstein(s.speed[0], n), by = arr_bernstein(s.speed[1], n);
+  std::vector<double> ang;
+  for (int j = 0; j <= n; ++j)
+    if (!CGAL::is_zero(bx[j]) || !CGAL::is_zero(by[j])) ang.push_back(std::atan2(CGAL::to_double(by[j]), CGAL::to_double(bx[j])));
+  if (ang.empty()) return false;
+  std::sort(ang.begin(), ang.end());
+  const double pi = std::acos(-1.0);
+  double gap = ang.front() + 2 * pi - ang.back(), mid = ang.back() + 0.5 * gap;
+  for (std::size_t i = 1; i < ang.size(); ++i)
+    if (ang[i] - ang[i - 1] > gap) {
+      gap = ang[i] - ang[i - 1];
+      mid = ang[i - 1] + 0.5 * gap;
+    }
+  if (gap < pi - 1e-9) return false;
+  const Rational vx(-std::cos(mid)), vy(-std::sin(mid));  // opposite the middle of the empty gap
+  for (int j = 0; j <= n; ++j)
+    if (CGAL::sign(vx * bx[j] + vy * by[j]) < 0) return false;
+  // v . C' is then >= 0 on [0,1]; it is not identically 0 since some coefficient is positive or all are 0
+  for (int j = 0; j <= n; ++j)
+    if (CGAL::sign(vx * bx[j] + vy * by[j]) > 0) return true;
+  return false;
+}
 
 inline Ci_poly1 arr_primitive(const Ci_poly1& f) {
   if (CGAL::is_zero(f)) return f;
@@ -76,6 +194,8 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   s->linear = true;
   for (std::size_t i = 1; i < p.size() && j < p.size(); ++i)
     if ((p[i][0] - p[0][0]) * (p[j][1] - p[0][1]) != (p[i][1] - p[0][1]) * (p[j][0] - p[0][0])) s->linear = false;
+  arr_piece_boxes(*s);
+  s->simple = arr_is_simple(*s);
   return s;
 }
 
