@@ -553,13 +553,13 @@ class Subdivision_topology {
     return r;
   }
 
-  // The partial derivative d^(di+dj) D / dx^di dy^dj (di + dj <= 1) in local coordinates at the interval point
-  // (x, y), by de Casteljau's algorithm on the differenced coefficients: an enclosure of its range there.
+  // The partial derivative d^(di+dj) D / dx^di dy^dj in local coordinates at the interval point (x, y), by de
+  // Casteljau's algorithm on the differenced coefficients: an enclosure of its range there.
   Mpfi_interval grid_value(const Interval_grid& g, int di, int dj, const Mpfi_interval& x, const Mpfi_interval& y) const {
     const int n = a_ - di, m = b_ - dj;
     Mpfi_interval r = Mpfi_interval::point(0, prec_);
     if (n < 0 || m < 0) return r;
-    std::vector<__mpfi_struct> w(std::size_t(n + 1) * (m + 1)), col(std::size_t(n + 1));
+    std::vector<__mpfi_struct> w(std::size_t(a_ + 1) * (b_ + 1)), col(std::size_t(n + 1));
     for (auto& z : w) mpfi_init2(&z, prec_);
     for (auto& z : col) mpfi_init2(&z, prec_);
     mpfi_t t, x1, y1;
@@ -568,19 +568,18 @@ class Subdivision_topology {
     mpfi_init2(y1, prec_);
     mpfi_ui_sub(x1, 1, x.get());
     mpfi_ui_sub(y1, 1, y.get());
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= m; ++j) {
-        mpfi_ptr z = &w[std::size_t(i) * (m + 1) + j];
-        if (di)
-          mpfi_sub(z, g.at(i + 1, j), g.at(i, j));
-        else if (dj)
-          mpfi_sub(z, g.at(i, j + 1), g.at(i, j));
-        else
-          mpfi_set(z, g.at(i, j));
-      }
+    auto W = [&](int i, int j) { return &w[std::size_t(i) * (b_ + 1) + j]; };
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) mpfi_set(W(i, j), g.at(i, j));
+    for (int s = 0; s < di; ++s)  // forward differences in place: the lower index keeps the difference
+      for (int i = 0; i + s < a_; ++i)
+        for (int j = 0; j <= b_; ++j) mpfi_sub(W(i, j), W(i + 1, j), W(i, j));
+    for (int s = 0; s < dj; ++s)
+      for (int i = 0; i <= a_; ++i)
+        for (int j = 0; j + s < b_; ++j) mpfi_sub(W(i, j), W(i, j + 1), W(i, j));
     // collapse every row (fixed i) along y, then the column along x
     for (int i = 0; i <= n; ++i) {
-      __mpfi_struct* row = &w[std::size_t(i) * (m + 1)];
+      __mpfi_struct* row = W(i, 0);
       for (int level = m; level >= 1; --level)
         for (int j = 0; j < level; ++j) {
           mpfi_mul(t, &row[j], y1);
@@ -596,8 +595,8 @@ class Subdivision_topology {
         mpfi_add(&col[i], &col[i], t);
       }
     mpfi_set(r.get(), &col[0]);
-    if (di) mpfi_mul_si(r.get(), r.get(), a_);
-    if (dj) mpfi_mul_si(r.get(), r.get(), b_);
+    for (int s = 0; s < di; ++s) mpfi_mul_si(r.get(), r.get(), a_ - s);
+    for (int s = 0; s < dj; ++s) mpfi_mul_si(r.get(), r.get(), b_ - s);
     for (auto& z : w) mpfi_clear(&z);
     for (auto& z : col) mpfi_clear(&z);
     mpfi_clear(t);
@@ -605,7 +604,6 @@ class Subdivision_topology {
     mpfi_clear(y1);
     return r;
   }
-
   // Long double copy of the grid's midpoints, scaled by a power of two (for Newton's method only).
   std::vector<long double> long_double_grid(const Interval_grid& g) const {
     mpfr_t m;
@@ -726,6 +724,7 @@ class Subdivision_topology {
     if (a_ + b_ < 2) return false;
     // (1) regular Hessian on B
     const I hxx = hessian_range(g, 0), hxy = hessian_range(g, 1), hyx = hxy, hyy = hessian_range(g, 2);
+    (void)hyx;
     const I det = hxx * hyy - hxy * hyx;
     if (det.contains_zero()) return false;
     const bool extremum = det.positive();
@@ -768,13 +767,25 @@ class Subdivision_topology {
       F[0] = grid_value(g, 1, 0, c[0], c[1]);
       F[1] = grid_value(g, 0, 1, c[0], c[1]);
     };
-    auto jacobian = [&](const std::array<I, 2>&, std::vector<std::vector<I>>& J) {
-      J[0][0] = hxx;
-      J[0][1] = hxy;
-      J[1][0] = hxy;
-      J[1][1] = hyy;
+    auto jacobian = [&](const std::array<I, 2>& Z, std::vector<std::vector<I>>& J) {
+      J[0][0] = grid_value(g, 2, 0, Z[0], Z[1]);
+      J[0][1] = grid_value(g, 1, 1, Z[0], Z[1]);
+      J[1][0] = J[0][1];
+      J[1][1] = grid_value(g, 0, 2, Z[0], Z[1]);
     };
-    if (!krawczyk_prove<2>(X, value, jacobian, 12)) return false;
+    if (!krawczyk_prove<2>(X, value, jacobian)) return false;
+    // contract (quadratically: the Hessian is enclosed on the current box) until D(X) excludes 0 or the
+    // enclosure stops shrinking (the working precision is reached)
+    bool off_curve = false;
+    for (int round = 0; round < 64; ++round) {
+      if (!grid_value(g, 0, 0, X[0], X[1]).contains_zero()) {
+        off_curve = true;
+        break;
+      }
+      const double w0 = X[0].width_double() + X[1].width_double();
+      if (!krawczyk_prove<2>(X, value, jacobian)) break;
+      if (!(X[0].width_double() + X[1].width_double() < 0.5 * w0)) break;
+    }
     const I zero = I::hull(Rational(0), Rational(0), prec_), one = I::hull(Rational(1), Rational(1), prec_);
     if (!X[0].strictly_inside(I::hull(Rational(0), Rational(1), prec_)) ||
         !X[1].strictly_inside(I::hull(Rational(0), Rational(1), prec_)))
@@ -782,7 +793,7 @@ class Subdivision_topology {
     const Parameter_box K{B.u0 + wu * X[0].lower(), B.u0 + wu * X[0].upper(), B.v0 + wv * X[1].lower(),
                           B.v0 + wv * X[1].upper()};
     // (3) D(p): nonzero (the box is split as usual), or zero by an exact rational point or the witness
-    if (!grid_value(g, 0, 0, X[0], X[1]).contains_zero()) {
+    if (off_curve) {
       off_curve_.push_back(K);
       return false;
     }

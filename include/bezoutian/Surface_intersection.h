@@ -13,6 +13,7 @@
 
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_topology_by_subdivision.h>
+#include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -320,7 +321,16 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   if (L.equation.is_degenerate())
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
                         "Theorems 4-5, e.g. it covers a surface twice)");
-  if (!internal::topology_is_affordable(L, o)) return L;
+  {  // nodes and isolated points of D = 0 are proved by two partners (internal/double_partner_witness.h)
+    Surface_intersection_options ow = o;
+    if (!ow.subdivision.singular_point_witness) {
+      const internal::Partner_equations eq(patch);
+      ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
+        return internal::prove_double_partner_point(eq, b, x);
+      };
+    }
+    if (!internal::topology_is_affordable(L, ow)) return L;
+  }
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double v, const std::array<double, 2>* guess) {
     Locus_point q;
@@ -448,7 +458,16 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
                         "are not generic in the sense of Theorems 2-3");
-  if (!internal::topology_is_affordable(L, o)) return L;
+  {  // nodes and isolated points of D = 0 are proved by two partners (internal/double_partner_witness.h)
+    Surface_intersection_options ow = o;
+    if (!ow.subdivision.singular_point_witness) {
+      const internal::Partner_equations eq(phi, psi);
+      ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
+        return internal::prove_double_partner_point(eq, b, x);
+      };
+    }
+    if (!internal::topology_is_affordable(L, ow)) return L;
+  }
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double t, const std::array<double, 2>* guess) {
     Locus_point q;

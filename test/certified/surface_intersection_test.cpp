@@ -165,3 +165,54 @@ TEST_CASE("teapot: shared boundary curves and touching corners are reported as c
   CHECK(shared_edges >= 8);
   CHECK(corner_points >= 4);
 }
+
+// A node of the projected intersection curve at an irrational point, proved by two partners. Phi(u,v) = (u, v, 0),
+// Psi(s,t) = (s^2 + (t^2 - 1/2) s, t, s^2 - t - 1/4): Phi = Psi iff v = t, s^2 = t + 1/4, u = t + 1/4 + (t^2 - 1/2) s,
+// so D(u,t) = (u - t - 1/4)^2 - (t + 1/4)(t^2 - 1/2)^2 (up to a constant): two branches u = t + 1/4 +- sqrt(t + 1/4)
+// (t^2 - 1/2) crossing at t = 1/sqrt(2), u = t + 1/4, with the two partners s = +-sqrt(t + 1/4).
+TEST_CASE("an irrational node of the intersection curve is certified by its two partners", "[surface][singular]") {
+  Patch phi = from_power({"u", "v", "0"}, 2, 2);
+  Patch psi = from_power({"u^2 + u*(v^2 - 1/2)", "v", "u^2 - v - 1/4"}, 2, 2);
+  Surface_intersection_options o;
+  o.box = Parameter_box{Q(1, 10), Q(1), Q(1, 10), Q(9, 10)};
+  o.partner_domain_unbounded = true;
+  Surface_locus L = intersection_locus(phi, psi, o);
+  // the implicit equation is the closed form above (primitive, up to sign)
+  const Polynomial_2<Integer> u = CGAL::shift(Polynomial_2<Integer>(1), 1, 0),
+                              t = CGAL::shift(Polynomial_2<Integer>(1), 1, 1);
+  const Polynomial_2<Integer> expected = (16 * u - 16 * t - 4) * (16 * u - 16 * t - 4) -
+                                         16 * (4 * t + 1) * (2 * t * t - 1) * (2 * t * t - 1);
+  const auto& D = L.equation.square_free;
+  CHECK((D == CGAL::canonicalize(expected) || D == -CGAL::canonicalize(expected) ||
+         CGAL::canonicalize(D) == CGAL::canonicalize(expected)));
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(L.topology_method == "subdivision");
+  REQUIRE(L.topology.number_of_singular_points() == 1);
+  const double tn = std::sqrt(0.5), un = tn + 0.25;
+  for (const auto& w : L.topology.vertices)
+    if (w.kind == Curve_topology_vertex::singular) {
+      CHECK(w.branches == 2);
+      CHECK(w.u_lo <= un);
+      CHECK(un <= w.u_hi);
+      CHECK(w.v_lo <= tn);
+      CHECK(tn <= w.v_hi);
+      CHECK(w.u_hi - w.u_lo < 1e-12);
+    }
+  CHECK(L.topology.components.size() == 1);
+  // without the partners' witness the subdivision cannot prove D = 0 at the node
+  Subdivision_topology_options plain;
+  const auto r = subdivide_curve_in_box(D, o.box, plain);
+  CHECK_FALSE(r.certified);
+  // every traced point lifts to the closed form
+  std::size_t checked = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      if (!q.lifted || q.residual > 1e-8) continue;
+      const double uu = q.projection[0], tt = q.projection[1], s = q.partner[1];
+      CHECK(s * s == Approx(tt + 0.25).margin(1e-7));
+      CHECK(uu == Approx(tt + 0.25 + (tt * tt - 0.5) * s).margin(1e-7));
+      ++checked;
+    }
+  CHECK(checked > 20);
+}

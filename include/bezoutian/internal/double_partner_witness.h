@@ -1,0 +1,540 @@
+// Proof that a critical point of the projected locus D is a point of D = 0 with two branches (a node or an
+// isolated point), from the geometry: a point x of the projection plane with two distinct partners.
+//
+// A point x = (x1, x2) of the projection plane lies on D = 0 when it has a partner y = (y1, y2) with
+//   E(x; y) = 0:  Phi(P) ~ Phi'(Q) (equal affine images), written as A_c(P) B_0(Q) - B_c(Q) A_0(P) = 0, c = 1..3,
+// where (A_0 : ... : A_3), (B_0 : ... : B_3) are the homogeneous power forms and, for
+//   self-intersection (Theorems 4-5):  y = (l, k), P = (x1, x2 + k), Q = (x1 + l, x2), Phi' = Phi, y != (0, 0);
+//   intersection (Theorems 2-3):       y = (v, s), P = (x1, v) on Phi, Q = (s, x2) on Psi.
+// D vanishes at every such x with A_0(P) B_0(Q) != 0 (it is the elimination polynomial of these equations,
+// buse-elkadi-galligo-2008 §5-6; for self-intersection after saturation by (k, l)), real or complex y alike.
+//
+// Two partners y_a != y_b of one point x make the 6 x 6 system E(x; y_a) = 0, E(x; y_b) = 0 (unknowns x, y_a,
+// y_b). Krawczyk's test on a small box proves a solution and that the system's Jacobian is regular there. Each
+// E(.; y_i) = 0 then defines a smooth branch of D = 0 through x (rank 3 in the 4 unknowns (x, y_i)), and the two
+// branches have distinct tangents (a common tangent direction d would give a null vector (d, e_a, e_b) of the
+// Jacobian). D vanishes on both branches, so grad D(x) is orthogonal to two independent directions: x is a
+// singular point of D. Complex conjugate partners y, conj(y) (an isolated real point of D = 0) use the real
+// system Re E(x; rho + i sigma) = 0, Im E(x; rho + i sigma) = 0 (unknowns x, rho, sigma, sigma != 0 proved): its
+// Jacobian is regular iff the complex 6 x 6 one is, and then the tangents d, conj(d) are independent over C.
+//
+// Finding the partners is floating point (roots of a numerical resultant, Gauss-Newton); only the final
+// Krawczyk test decides, in MPFI interval arithmetic.
+#ifndef BEZOUTIAN_INTERNAL_DOUBLE_PARTNER_WITNESS_H
+#define BEZOUTIAN_INTERNAL_DOUBLE_PARTNER_WITNESS_H
+
+#include <bezoutian/Curve_topology.h>
+#include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/internal/interval_krawczyk.h>
+#include <bezoutian/number_types.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+/// The partner equations of a locus (see the header comment): which patch points P, Q a pair (x, y) defines.
+class Partner_equations {
+ public:
+  /// Self-intersection of `phi`.
+  explicit Partner_equations(const Rational_bezier_patch<Rational>& phi) : self_(true) { init(phi, phi); }
+  /// Intersection of `phi` (u, v) and `psi` (s, t).
+  Partner_equations(const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>& psi)
+      : self_(false) {
+    init(phi, psi);
+  }
+  bool self_intersection() const { return self_; }
+  /// A bound on the degree of E in y1 and in y2.
+  int degree_bound() const { return degree_bound_; }
+  /// The weights A_0(P), B_0(Q) at z (double).
+  std::array<std::complex<double>, 2> weights(const std::array<std::complex<double>, 4>& z) const {
+    std::array<std::complex<double>, 2> P, Q;
+    points(z, P, Q);
+    return {horner_double(A_[0].df, P), horner_double(B_[0].df, Q)};
+  }
+
+  // Coordinates of P and Q and the derivative of (P, Q) with respect to z = (x1, x2, y1, y2).
+  template <class T>
+  void points(const std::array<T, 4>& z, std::array<T, 2>& P, std::array<T, 2>& Q) const {
+    if (self_) {
+      P = {z[0], z[1] + z[3]};
+      Q = {z[0] + z[2], z[1]};
+    } else {
+      P = {z[0], z[2]};
+      Q = {z[3], z[1]};
+    }
+  }
+  // dP_a/dz_i, dQ_b/dz_i (0 or 1)
+  int dP(int a, int i) const { return self_ ? (a == 0 ? i == 0 : (i == 1 || i == 3)) : (a == 0 ? i == 0 : i == 2); }
+  int dQ(int b, int i) const { return self_ ? (b == 0 ? (i == 0 || i == 2) : i == 1) : (b == 0 ? i == 3 : i == 1); }
+
+  /// E and dE/dz (3 x 4) at z (complex numbers, double).
+  void evaluate(const std::array<std::complex<double>, 4>& z, std::array<std::complex<double>, 3>& E,
+                std::array<std::array<std::complex<double>, 4>, 3>& J) const {
+    using C = std::complex<double>;
+    std::array<C, 2> P, Q;
+    points(z, P, Q);
+    std::array<std::array<C, 3>, 4> a, b;  // value, d/du, d/dv of each form at P, Q
+    for (int k = 0; k < 4; ++k) {
+      a[k] = jet_double(A_[k], P);
+      b[k] = jet_double(B_[k], Q);
+    }
+    for (int c = 1; c <= 3; ++c) {
+      E[c - 1] = a[c][0] * b[0][0] - b[c][0] * a[0][0];
+      for (int i = 0; i < 4; ++i) {
+        C d = 0;
+        for (int e = 0; e < 2; ++e) {
+          if (dP(e, i)) d += a[c][1 + e] * b[0][0] - b[c][0] * a[0][1 + e];
+          if (dQ(e, i)) d += a[c][0] * b[0][1 + e] - b[c][1 + e] * a[0][0];
+        }
+        J[c - 1][i] = d;
+      }
+    }
+  }
+
+  /// The same in complex interval arithmetic (each complex number a pair of MPFI intervals: an enclosure).
+  struct Cx {
+    Mpfi_interval re, im;
+  };
+  void evaluate(const std::array<Cx, 4>& z, std::array<Cx, 3>& E, std::array<std::array<Cx, 4>, 3>& J,
+                std::array<Cx, 2>& weights) const {
+    const mpfr_prec_t prec = z[0].re.prec();
+    std::array<Cx, 2> P{z[0], z[0]}, Q{z[0], z[0]};
+    if (self_) {
+      P = {z[0], add(z[1], z[3])};
+      Q = {add(z[0], z[2]), z[1]};
+    } else {
+      P = {z[0], z[2]};
+      Q = {z[3], z[1]};
+    }
+    std::vector<std::array<Cx, 3>> a, b;
+    for (int k = 0; k < 4; ++k) {
+      a.push_back(jet_interval(A_[k], P, prec));
+      b.push_back(jet_interval(B_[k], Q, prec));
+    }
+    weights = {a[0][0], b[0][0]};
+    for (int c = 1; c <= 3; ++c) {
+      E[c - 1] = sub(mul(a[c][0], b[0][0]), mul(b[c][0], a[0][0]));
+      for (int i = 0; i < 4; ++i) {
+        Cx d{Mpfi_interval::point(0, prec), Mpfi_interval::point(0, prec)};
+        for (int e = 0; e < 2; ++e) {
+          if (dP(e, i)) d = add(d, sub(mul(a[c][1 + e], b[0][0]), mul(b[c][0], a[0][1 + e])));
+          if (dQ(e, i)) d = add(d, sub(mul(a[c][0], b[0][1 + e]), mul(b[c][1 + e], a[0][0])));
+        }
+        J[c - 1][i] = d;
+      }
+    }
+  }
+
+  static Cx add(const Cx& x, const Cx& y) { return Cx{x.re + y.re, x.im + y.im}; }
+  static Cx sub(const Cx& x, const Cx& y) { return Cx{x.re - y.re, x.im - y.im}; }
+  static Cx mul(const Cx& x, const Cx& y) { return Cx{x.re * y.re - x.im * y.im, x.re * y.im + x.im * y.re}; }
+
+ private:
+  // A form in power basis with its two partial derivatives: coefficient [j][i] of u^i v^j.
+  struct Form {
+    std::vector<std::vector<Rational>> f, fu, fv;
+    std::vector<std::vector<double>> df, dfu, dfv;
+  };
+  void init(const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>& psi) {
+    const auto pa = phi.power_form(), pb = psi.power_form();
+    degree_bound_ = std::max(std::max(phi.degree_u(), phi.degree_v()), std::max(psi.degree_u(), psi.degree_v()));
+    for (int k = 0; k < 4; ++k) {
+      A_[k] = make_form(pa[k]);
+      B_[k] = make_form(pb[k]);
+    }
+  }
+  template <class P2>
+  static Form make_form(const P2& p) {
+    Form F;
+    const int n = p.degree();
+    int m = 0;
+    for (int j = 0; j <= n; ++j) m = std::max(m, p[j].degree());
+    F.f.assign(n + 1, std::vector<Rational>(m + 1, Rational(0)));
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= p[j].degree(); ++i) F.f[j][i] = p[j][i];
+    F.fu = F.f;
+    F.fv = F.f;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= m; ++i) {
+        F.fu[j][i] = i < m ? F.f[j][i + 1] * (i + 1) : Rational(0);
+        F.fv[j][i] = j < n ? F.f[j + 1][i] * (j + 1) : Rational(0);
+      }
+    auto to_d = [](const std::vector<std::vector<Rational>>& x) {
+      std::vector<std::vector<double>> r(x.size());
+      for (std::size_t j = 0; j < x.size(); ++j)
+        for (const auto& c : x[j]) r[j].push_back(CGAL::to_double(c));
+      return r;
+    };
+    F.df = to_d(F.f);
+    F.dfu = to_d(F.fu);
+    F.dfv = to_d(F.fv);
+    return F;
+  }
+  template <class T>
+  static T horner_double(const std::vector<std::vector<double>>& c, const std::array<T, 2>& x) {
+    T r = 0;
+    for (std::size_t j = c.size(); j-- > 0;) {
+      T s = 0;
+      for (std::size_t i = c[j].size(); i-- > 0;) s = s * x[0] + c[j][i];
+      r = r * x[1] + s;
+    }
+    return r;
+  }
+  static std::array<std::complex<double>, 3> jet_double(const Form& F, const std::array<std::complex<double>, 2>& x) {
+    return {horner_double(F.df, x), horner_double(F.dfu, x), horner_double(F.dfv, x)};
+  }
+  static Cx horner_interval(const std::vector<std::vector<Rational>>& c, const std::array<Cx, 2>& x, mpfr_prec_t prec) {
+    auto constant = [&](const Rational& q) {
+      return Cx{Mpfi_interval::hull(q, q, prec), Mpfi_interval::point(0, prec)};
+    };
+    Cx r = constant(Rational(0));
+    for (std::size_t j = c.size(); j-- > 0;) {
+      Cx s = constant(Rational(0));
+      for (std::size_t i = c[j].size(); i-- > 0;) s = add(mul(s, x[0]), constant(c[j][i]));
+      r = add(mul(r, x[1]), s);
+    }
+    return r;
+  }
+  static std::array<Cx, 3> jet_interval(const Form& F, const std::array<Cx, 2>& x, mpfr_prec_t prec) {
+    return {horner_interval(F.f, x, prec), horner_interval(F.fu, x, prec), horner_interval(F.fv, x, prec)};
+  }
+
+  bool self_;
+  int degree_bound_ = 0;
+  std::array<Form, 4> A_, B_;
+};
+
+// Complex roots of the polynomial c[0] + c[1] z + ... (Durand-Kerner / Weierstrass iteration); leading
+// coefficients negligible against the others are dropped first (roots at infinity).
+inline std::vector<std::complex<double>> complex_roots(std::vector<std::complex<double>> c) {
+  using C = std::complex<double>;
+  double big = 0;
+  for (const C& x : c) big = std::max(big, std::abs(x));
+  while (!c.empty() && !(std::abs(c.back()) > 1e-11 * big)) c.pop_back();
+  if (c.size() < 2) return {};
+  const int n = int(c.size()) - 1;
+  for (C& x : c) x /= c.back();
+  double bound = 0;  // Cauchy's bound
+  for (int i = 0; i < n; ++i) bound = std::max(bound, std::abs(c[i]));
+  bound += 1;
+  std::vector<C> z(n);
+  for (int i = 0; i < n; ++i) z[i] = std::polar(0.5 * bound, 0.4 + 2 * M_PI * i / n);
+  auto eval = [&](C x) {
+    C r = c[n];
+    for (int i = n - 1; i >= 0; --i) r = r * x + c[i];
+    return r;
+  };
+  for (int it = 0; it < 800; ++it) {
+    double change = 0;
+    for (int i = 0; i < n; ++i) {
+      C den = 1;
+      for (int j = 0; j < n; ++j)
+        if (j != i) den *= (z[i] - z[j]);
+      if (std::abs(den) == 0) den = 1e-300;
+      const C d = eval(z[i]) / den;
+      z[i] -= d;
+      change = std::max(change, std::abs(d) / (1 + std::abs(z[i])));
+    }
+    if (change < 1e-15) break;
+  }
+  return z;
+}
+
+/// Floating-point partners y of the point x (E(x; y) ~ 0, nonzero weights), real and complex: the roots y1 of
+/// the Sylvester resultant of E_1, E_2 in y2 (interpolated from values on a circle), y2 the common root, each
+/// polished by Gauss-Newton on the three equations; distinct up to 1e-7, without the trivial partner (0, 0) of
+/// self-intersection.
+inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const Partner_equations& eq,
+                                                                        const std::array<double, 2>& x, int degree) {
+  using C = std::complex<double>;
+  const int d = degree;  // bound on the degree of E in y1 and in y2
+  auto E_at = [&](C y1, C y2) {
+    std::array<C, 3> E;
+    std::array<std::array<C, 4>, 3> J;
+    eq.evaluate({C(x[0]), C(x[1]), y1, y2}, E, J);
+    return E;
+  };
+  // coefficients in y2 of E_1, E_2 at y1 (inverse DFT of values at the (d+1)-th roots of unity)
+  auto coefficients = [&](C y1, int which) {
+    std::vector<C> v(d + 1), c(d + 1, 0);
+    for (int k = 0; k <= d; ++k) v[k] = E_at(y1, std::polar(1.0, 2 * M_PI * k / (d + 1)))[which];
+    for (int j = 0; j <= d; ++j) {
+      for (int k = 0; k <= d; ++k) c[j] += v[k] * std::polar(1.0, -2 * M_PI * j * k / (d + 1));
+      c[j] /= double(d + 1);
+    }
+    return c;
+  };
+  auto sylvester_det = [&](const std::vector<C>& f, const std::vector<C>& g) {
+    const int n = 2 * d;
+    std::vector<std::vector<C>> S(n, std::vector<C>(n, 0));
+    for (int r = 0; r < d; ++r)
+      for (int j = 0; j <= d; ++j) {
+        S[r][r + j] = f[d - j];
+        S[d + r][r + j] = g[d - j];
+      }
+    C det = 1;
+    for (int col = 0; col < n; ++col) {
+      int piv = col;
+      for (int r = col + 1; r < n; ++r)
+        if (std::abs(S[r][col]) > std::abs(S[piv][col])) piv = r;
+      if (std::abs(S[piv][col]) == 0) return C(0);
+      if (piv != col) {
+        std::swap(S[piv], S[col]);
+        det = -det;
+      }
+      det *= S[col][col];
+      for (int r = col + 1; r < n; ++r) {
+        const C f2 = S[r][col] / S[col][col];
+        for (int j = col; j < n; ++j) S[r][j] -= f2 * S[col][j];
+      }
+    }
+    return det;
+  };
+  // R(y1) has degree <= 2 d^2: values at N points of a circle of radius rho, inverse DFT
+  const int N = 2 * d * d + 1;
+  std::vector<C> res_coeff;
+  std::vector<std::array<C, 2>> out;
+  for (double rho : {1.0, 2.0}) {
+    std::vector<C> vals(N), co(N, 0);
+    for (int k = 0; k < N; ++k) {
+      const C y1 = std::polar(rho, 2 * M_PI * k / N);
+      vals[k] = sylvester_det(coefficients(y1, 0), coefficients(y1, 1));
+    }
+    for (int j = 0; j < N; ++j) {
+      for (int k = 0; k < N; ++k) co[j] += vals[k] * std::polar(1.0, -2 * M_PI * j * k / N);
+      co[j] /= double(N) * std::pow(rho, j);
+    }
+    for (const C& y1 : complex_roots(co)) {
+      if (!(std::abs(y1) < 1e6)) continue;
+      for (const C& y2 : complex_roots(coefficients(y1, 0))) {
+        std::array<C, 2> y{y1, y2};
+        for (int it = 0; it < 30; ++it) {  // Gauss-Newton on the three equations
+          std::array<C, 3> E;
+          std::array<std::array<C, 4>, 3> J;
+          eq.evaluate({C(x[0]), C(x[1]), y[0], y[1]}, E, J);
+          C m00 = 0, m01 = 0, m11 = 0, r0 = 0, r1 = 0;
+          for (int c = 0; c < 3; ++c) {
+            const C j0 = J[c][2], j1 = J[c][3];
+            m00 += std::conj(j0) * j0;
+            m01 += std::conj(j0) * j1;
+            m11 += std::conj(j1) * j1;
+            r0 -= std::conj(j0) * E[c];
+            r1 -= std::conj(j1) * E[c];
+          }
+          const C det = m00 * m11 - m01 * std::conj(m01);
+          if (!(std::abs(det) > 0)) break;
+          const C d0 = (m11 * r0 - m01 * r1) / det, d1 = (m00 * r1 - std::conj(m01) * r0) / det;
+          y[0] += d0;
+          y[1] += d1;
+          if (std::abs(d0) + std::abs(d1) < 1e-15 * (1 + std::abs(y[0]) + std::abs(y[1]))) break;
+        }
+        std::array<C, 3> E;
+        std::array<std::array<C, 4>, 3> J;
+        eq.evaluate({C(x[0]), C(x[1]), y[0], y[1]}, E, J);
+        double scale = 0;
+        for (auto& row : J)
+          for (auto& v : row) scale = std::max(scale, std::abs(v));
+        if (!(std::sqrt(std::norm(E[0]) + std::norm(E[1]) + std::norm(E[2])) <= 1e-10 * (1 + scale))) continue;
+        const auto w = eq.weights({C(x[0]), C(x[1]), y[0], y[1]});
+        if (!(std::abs(w[0]) > 1e-8 && std::abs(w[1]) > 1e-8)) continue;  // a point at infinity, not a partner
+        if (eq.self_intersection() && std::abs(y[0]) + std::abs(y[1]) < 1e-7) continue;
+        if (std::abs(y[0].imag()) < 1e-12 && std::abs(y[1].imag()) < 1e-12) y = {C(y[0].real()), C(y[1].real())};
+        bool known = false;
+        for (const auto& o : out) known = known || std::abs(o[0] - y[0]) + std::abs(o[1] - y[1]) < 1e-7;
+        if (!known) out.push_back(y);
+      }
+    }
+  }
+  return out;
+}
+
+/// \brief Proves that `box` (of the projection plane) contains a point of D = 0 with two branches of distinct
+/// tangents (see the header comment), starting from the approximation `x`. True only with a proof.
+inline bool prove_double_partner_point(const Partner_equations& eq, const Parameter_box& box,
+                                       const std::array<double, 2>& x) {
+  using C = std::complex<double>;
+  using I = Mpfi_interval;
+  const auto partners = numerical_partners(eq, x, eq.degree_bound());
+  // candidate pairs: two real partners, or one non-real partner (its conjugate is the other)
+  std::vector<std::pair<std::array<C, 2>, std::array<C, 2>>> pairs;
+  for (std::size_t a = 0; a < partners.size(); ++a) {
+    const bool real_a = partners[a][0].imag() == 0 && partners[a][1].imag() == 0;
+    if (!real_a) {
+      pairs.push_back({partners[a], {std::conj(partners[a][0]), std::conj(partners[a][1])}});
+      continue;
+    }
+    for (std::size_t b = a + 1; b < partners.size(); ++b)
+      if (partners[b][0].imag() == 0 && partners[b][1].imag() == 0) pairs.push_back({partners[a], partners[b]});
+  }
+  const mpfr_prec_t prec = 192;
+  for (const auto& pr : pairs) {
+    const bool complex_pair = pr.first[0].imag() != 0 || pr.first[1].imag() != 0;
+    // unknowns w = (x1, x2, ya1, ya2, yb1, yb2) (real pair) or (x1, x2, rho1, rho2, sigma1, sigma2) (complex)
+    std::array<double, 6> w{x[0], x[1], pr.first[0].real(), pr.first[1].real(),
+                            complex_pair ? pr.first[0].imag() : pr.second[0].real(),
+                            complex_pair ? pr.first[1].imag() : pr.second[1].real()};
+    // the two partner arguments z_a, z_b of E as complex numbers, for the floating-point Newton refinement
+    auto args = [&](const std::array<double, 6>& v) {
+      std::array<std::array<C, 4>, 2> z;
+      if (complex_pair) {
+        z[0] = {C(v[0]), C(v[1]), C(v[2], v[4]), C(v[3], v[5])};
+        z[1] = {C(v[0]), C(v[1]), C(v[2], -v[4]), C(v[3], -v[5])};
+      } else {
+        z[0] = {C(v[0]), C(v[1]), C(v[2]), C(v[3])};
+        z[1] = {C(v[0]), C(v[1]), C(v[4]), C(v[5])};
+      }
+      return z;
+    };
+    // real 6 x 6 system and its Jacobian (double)
+    auto system = [&](const std::array<double, 6>& v, double F[6], double J[6][6]) {
+      const auto z = args(v);
+      std::array<C, 3> E;
+      std::array<std::array<C, 4>, 3> Jc;
+      if (complex_pair) {
+        eq.evaluate(z[0], E, Jc);
+        for (int c = 0; c < 3; ++c) {
+          F[c] = E[c].real();
+          F[3 + c] = E[c].imag();
+          for (int i = 0; i < 2; ++i) {  // real x_i
+            J[c][i] = Jc[c][i].real();
+            J[3 + c][i] = Jc[c][i].imag();
+          }
+          for (int i = 0; i < 2; ++i) {  // y_i = rho_i + i sigma_i, E holomorphic in y_i (Cauchy-Riemann)
+            J[c][2 + i] = Jc[c][2 + i].real();
+            J[3 + c][2 + i] = Jc[c][2 + i].imag();
+            J[c][4 + i] = -Jc[c][2 + i].imag();
+            J[3 + c][4 + i] = Jc[c][2 + i].real();
+          }
+        }
+      } else {
+        for (int s = 0; s < 2; ++s) {
+          eq.evaluate(z[s], E, Jc);
+          for (int c = 0; c < 3; ++c) {
+            F[3 * s + c] = E[c].real();
+            for (int i = 0; i < 6; ++i) J[3 * s + c][i] = 0;
+            J[3 * s + c][0] = Jc[c][0].real();
+            J[3 * s + c][1] = Jc[c][1].real();
+            J[3 * s + c][2 + 2 * s] = Jc[c][2].real();
+            J[3 * s + c][3 + 2 * s] = Jc[c][3].real();
+          }
+        }
+      }
+    };
+    bool converged = false;
+    for (int it = 0; it < 30 && !converged; ++it) {
+      double F[6], J[6][6];
+      system(w, F, J);
+      double M[6][7];
+      for (int i = 0; i < 6; ++i) {
+        for (int j = 0; j < 6; ++j) M[i][j] = J[i][j];
+        M[i][6] = -F[i];
+      }
+      bool singular = false;
+      for (int col = 0; col < 6 && !singular; ++col) {
+        int piv = col;
+        for (int r = col + 1; r < 6; ++r)
+          if (std::fabs(M[r][col]) > std::fabs(M[piv][col])) piv = r;
+        if (!(std::fabs(M[piv][col]) > 0)) singular = true;
+        if (singular) break;
+        for (int j = 0; j < 7; ++j) std::swap(M[col][j], M[piv][j]);
+        for (int r = col + 1; r < 6; ++r) {
+          const double f = M[r][col] / M[col][col];
+          for (int j = col; j < 7; ++j) M[r][j] -= f * M[col][j];
+        }
+      }
+      if (singular) break;
+      double d[6], step = 0;
+      for (int i = 5; i >= 0; --i) {
+        double s = M[i][6];
+        for (int j = i + 1; j < 6; ++j) s -= M[i][j] * d[j];
+        d[i] = s / M[i][i];
+        step += std::fabs(d[i]);
+      }
+      for (int i = 0; i < 6; ++i) w[i] += d[i];
+      if (!std::isfinite(step)) break;
+      if (step < 1e-14 * (1 + std::fabs(w[0]) + std::fabs(w[1]))) converged = true;
+    }
+    if (!converged) continue;
+    // Krawczyk in MPFI on a box of radius r around w
+    std::array<I, 6> X{I(prec), I(prec), I(prec), I(prec), I(prec), I(prec)};
+    for (int i = 0; i < 6; ++i) {
+      const double r = 1e-9 * (1 + std::fabs(w[i]));
+      X[i] = I::hull(Rational(w[i] - r), Rational(w[i] + r), prec);
+    }
+    std::array<Partner_equations::Cx, 2> weights_a{Partner_equations::Cx{I(prec), I(prec)}, Partner_equations::Cx{I(prec), I(prec)}};
+    auto weights_b = weights_a;
+    auto interval_system = [&](const std::array<I, 6>& v, std::array<I, 6>* F, std::vector<std::vector<I>>* J) {
+      const I zero = I::point(0, prec);
+      using Cx = Partner_equations::Cx;
+      const Cx zc{zero, zero};
+      const std::array<std::array<Cx, 4>, 2> z{
+          std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[2], complex_pair ? v[4] : zero},
+                            Cx{v[3], complex_pair ? v[5] : zero}},
+          std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[4], zero}, Cx{v[5], zero}}};
+      std::array<Cx, 3> E{zc, zc, zc};
+      std::array<std::array<Cx, 4>, 3> Jc{std::array<Cx, 4>{zc, zc, zc, zc}, std::array<Cx, 4>{zc, zc, zc, zc},
+                                          std::array<Cx, 4>{zc, zc, zc, zc}};
+      for (int s = 0; s < (complex_pair ? 1 : 2); ++s) {
+        eq.evaluate(z[s], E, Jc, s == 0 ? weights_a : weights_b);
+        for (int c = 0; c < 3; ++c) {
+          const int row = complex_pair ? c : 3 * s + c;
+          if (F) {
+            (*F)[row] = E[c].re;
+            if (complex_pair) (*F)[3 + c] = E[c].im;
+          }
+          if (!J) continue;
+          if (complex_pair) {
+            for (int i = 0; i < 2; ++i) {
+              (*J)[c][i] = Jc[c][i].re;
+              (*J)[3 + c][i] = Jc[c][i].im;
+              (*J)[c][2 + i] = Jc[c][2 + i].re;
+              (*J)[3 + c][2 + i] = Jc[c][2 + i].im;
+              (*J)[c][4 + i] = I::point(0, prec) - Jc[c][2 + i].im;
+              (*J)[3 + c][4 + i] = Jc[c][2 + i].re;
+            }
+          } else {
+            for (int i = 0; i < 6; ++i) (*J)[row][i] = zero;
+            (*J)[row][0] = Jc[c][0].re;
+            (*J)[row][1] = Jc[c][1].re;
+            (*J)[row][2 + 2 * s] = Jc[c][2].re;
+            (*J)[row][3 + 2 * s] = Jc[c][3].re;
+          }
+        }
+      }
+    };
+    auto value = [&](const std::array<I, 6>& c, std::array<I, 6>& F) { interval_system(c, &F, nullptr); };
+    auto jacobian = [&](const std::array<I, 6>& Z, std::vector<std::vector<I>>& J) {
+      interval_system(Z, nullptr, &J);
+    };
+    if (!krawczyk_prove<6>(X, value, jacobian)) continue;
+    // the conditions of the header comment, on the proved box
+    interval_system(X, nullptr, nullptr);  // weights over the final box
+    const I bu = I::hull(box.u0, box.u1, prec), bv = I::hull(box.v0, box.v1, prec);
+    if (!X[0].strictly_inside(bu) || !X[1].strictly_inside(bv)) continue;
+    auto nonzero = [](const Partner_equations::Cx& c) { return !c.re.contains_zero() || !c.im.contains_zero(); };
+    if (!nonzero(weights_a[0]) || !nonzero(weights_a[1])) continue;
+    if (complex_pair) {
+      if (X[4].contains_zero() && X[5].contains_zero()) continue;  // sigma != 0: a non-real partner
+      if (eq.self_intersection() && X[2].contains_zero() && X[3].contains_zero() && X[4].contains_zero() &&
+          X[5].contains_zero())
+        continue;
+    } else {
+      if (!nonzero(weights_b[0]) || !nonzero(weights_b[1])) continue;
+      if (!disjoint(X[2], X[4]) && !disjoint(X[3], X[5])) continue;  // two distinct partners
+      if (eq.self_intersection() && ((X[2].contains_zero() && X[3].contains_zero()) ||
+                                     (X[4].contains_zero() && X[5].contains_zero())))
+        continue;  // the trivial partner (0, 0)
+    }
+    return true;
+  }
+  return false;
+}
+
+} // namespace internal
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_INTERNAL_DOUBLE_PARTNER_WITNESS_H
