@@ -11,6 +11,7 @@
 #include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/internal/arr_bezier_exact.h>
+#include <bezoutian/internal/arr_bezier_parameter.h>
 
 #include <CGAL/Interval_nt.h>
 
@@ -29,29 +30,6 @@
 #include <utility>
 #include <vector>
 
-#ifdef BEZOUTIAN_ARR_PROFILE
-#include <chrono>
-#include <cstdio>
-namespace bezoutian { namespace internal {
-struct Arr_profile {
-  const char* name; long n = 0; double ms = 0;
-  explicit Arr_profile(const char* s) : name(s) {}
-  ~Arr_profile() { std::fprintf(stderr, "%-24s %8ld calls %9.2f ms\n", name, n, ms); }
-};
-struct Arr_timer {
-  Arr_profile& p; std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Arr_timer(Arr_profile& q) : p(q) { ++p.n; }
-  ~Arr_timer() { p.ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
-};
-}}
-#define BEZOUTIAN_ARR_CAT2(a, b) a##b
-#define BEZOUTIAN_ARR_CAT(a, b) BEZOUTIAN_ARR_CAT2(a, b)
-#define BEZOUTIAN_ARR_TIME(name)                                                    \
-  static internal::Arr_profile BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__)(name);        \
-  internal::Arr_timer BEZOUTIAN_ARR_CAT(arr_timer_, __LINE__)(BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__))
-#else
-#define BEZOUTIAN_ARR_TIME(name)
-#endif
 
 namespace bezoutian {
 
@@ -62,7 +40,8 @@ namespace bezoutian {
 class Arr_bezier_point_2 {
  public:
   using Supporting = internal::Arr_bezier_supporting_curve;
-  using Origin = std::pair<std::shared_ptr<const Supporting>, Algebraic_real>;
+  using Parameter = internal::Arr_parameter;
+  using Origin = std::pair<std::shared_ptr<const Supporting>, Parameter>;
 
   /// The origin (0,0).
   Arr_bezier_point_2() : Arr_bezier_point_2(Rational(0), Rational(0)) {}
@@ -79,7 +58,7 @@ class Arr_bezier_point_2 {
     rep_->known[0] = rep_->known[1] = true;
   }
   /// The point of a supporting curve at parameter t (exact coordinates computed on demand).
-  Arr_bezier_point_2(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) : rep_(std::make_shared<Rep>()) {
+  Arr_bezier_point_2(const std::shared_ptr<const Supporting>& s, const Parameter& t) : rep_(std::make_shared<Rep>()) {
     rep_->origins.push_back({s, t});
     if (t.is_rational())
       for (int k = 0; k < 2; ++k) coordinate(k);
@@ -91,7 +70,7 @@ class Arr_bezier_point_2 {
     if (!r.known[k]) {
       BEZOUTIAN_ARR_TIME("exact coordinate");
       const Origin& o = r.origins.front();
-      r.c[k] = internal::arr_value_at(o.first->num[k], o.first->den[k], o.second);
+      r.c[k] = internal::arr_value_at(o.first->num[k], o.first->den[k], o.second.exact());
       r.known[k] = true;
     }
     return r.c[k];
@@ -153,9 +132,9 @@ class Arr_bezier_point_2 {
   double approximate_y() const { return y().to_double(); }
   const std::vector<Origin>& origins() const { return rep_->origins; }
   /// Records that the point lies on s at parameter t (the caller guarantees it).
-  void add_origin(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t) const {
+  void add_origin(const std::shared_ptr<const Supporting>& s, const Parameter& t) const {
     for (const Origin& o : rep_->origins)
-      if (o.first == s && internal::Algebraic_real_access::same_representation(o.second, t)) return;
+      if (o.first == s && o.second.same_representation(t)) return;
     rep_->origins.push_back({s, t});
   }
   bool is_same(const Arr_bezier_point_2& o) const { return rep_ == o.rep_; }
@@ -201,6 +180,7 @@ class Arr_bezier_point_2 {
 class Arr_bezier_x_monotone_curve_2 {
  public:
   using Supporting = internal::Arr_bezier_supporting_curve;
+  using Parameter = internal::Arr_parameter;
   using Point_2 = Arr_bezier_point_2;
   using Multiplicity = unsigned int;
 
@@ -208,14 +188,14 @@ class Arr_bezier_x_monotone_curve_2 {
   /// The arc of s on [t0, t1] with the given end points; `increasing` says whether x (y for vertical arcs)
   /// increases with the parameter. The arc is directed like the parameter (source at t0);
   /// Construct_opposite_2 flips the direction.
-  Arr_bezier_x_monotone_curve_2(std::shared_ptr<const Supporting> s, const Algebraic_real& t0, const Algebraic_real& t1,
+  Arr_bezier_x_monotone_curve_2(std::shared_ptr<const Supporting> s, const Parameter& t0, const Parameter& t1,
                                 const Point_2& p0, const Point_2& p1, bool increasing)
       : s_(std::move(s)), t0_(t0), t1_(t1), p0_(p0), p1_(p1), increasing_(increasing), directed_right_(increasing) {}
 
   const std::shared_ptr<const Supporting>& supporting() const { return s_; }
   const Rational_bezier_curve_2<Rational>& supporting_curve() const { return s_->curve; }
-  const Algebraic_real& parameter_min() const { return t0_; }
-  const Algebraic_real& parameter_max() const { return t1_; }
+  const Parameter& parameter_min() const { return t0_; }
+  const Parameter& parameter_max() const { return t1_; }
   const Point_2& point_at_min_parameter() const { return p0_; }
   const Point_2& point_at_max_parameter() const { return p1_; }
   bool is_vertical() const { return s_->vertical; }
@@ -254,7 +234,7 @@ class Arr_bezier_x_monotone_curve_2 {
 
  private:
   std::shared_ptr<const Supporting> s_;
-  Algebraic_real t0_, t1_;
+  Parameter t0_, t1_;
   Point_2 p0_, p1_;
   bool increasing_ = true;
   bool directed_right_ = true;
@@ -275,6 +255,7 @@ class Arr_rational_bezier_traits_2 {
   using X_monotone_curve_2 = Arr_bezier_x_monotone_curve_2;
   using Multiplicity = unsigned int;
   using Supporting = internal::Arr_bezier_supporting_curve;
+  using Parameter = internal::Arr_parameter;
 
   using Has_left_category = CGAL::Tag_true;
   using Has_merge_category = CGAL::Tag_true;
@@ -289,11 +270,11 @@ class Arr_rational_bezier_traits_2 {
   /// One intersection of two supporting curves: the point and its parameters on both.
   struct Cached_point {
     Point_2 p;
-    Algebraic_real s, t;
+    Parameter s, t;
     bool tangent;
   };
   struct Cached_overlap {
-    Algebraic_real s0, s1, t0, t1;
+    Parameter s0, s1, t0, t1;
   };
   struct Pair_entry {
     std::vector<Cached_point> points;
@@ -323,6 +304,27 @@ class Arr_rational_bezier_traits_2 {
     const bool disjoint = a != b && internal::arr_pieces_disjoint(*a, *b, 0, 0, 0);
     if (disjoint || (a == b && (a->linear || a->simple)))  // (an arc of a line segment has no self-intersection)
       return cache_->pairs.emplace(key, Pair_entry()).first->second;
+    if (a != b) {  // interval subdivision and Krawczyk: exact parameters only on demand
+      BEZOUTIAN_ARR_TIME("interval solver");
+      internal::Arr_interval_solver solver{*a, *b, {}};
+      solver.run(a->inet, 0, 1, b->inet, 0, 1, 0);
+      if (!solver.failed) {
+        auto pair = std::make_shared<internal::Arr_exact_pair>();
+        pair->a = a;
+        pair->b = b;
+        Pair_entry e;
+        for (const auto& f : solver.found) {
+          auto l = std::make_shared<internal::Arr_lazy_point>();
+          l->pair = pair;
+          for (int i = 0; i < 4; ++i) l->box[i] = Rational(f[i]);
+          const Parameter s(l, 0), t(l, 1);
+          Point_2 p(a, s);
+          p.add_origin(b, t);
+          e.points.push_back({p, s, t, false});
+        }
+        return cache_->pairs.emplace(key, std::move(e)).first->second;
+      }
+    }
     Curve_intersection_result r;
     try {
       BEZOUTIAN_ARR_TIME("intersect_curves/self");
@@ -376,7 +378,7 @@ class Arr_rational_bezier_traits_2 {
   };
 
   /// Parameter of the arc at the point p (p on the arc, or at least x(p) in its x-range for non-vertical arcs).
-  static Algebraic_real parameter_of(const X_monotone_curve_2& c, const Point_2& p) {
+  static Parameter parameter_of(const X_monotone_curve_2& c, const Point_2& p) {
     BEZOUTIAN_ARR_TIME("parameter_of");
     for (const auto& o : p.origins())
       if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return o.second;
@@ -467,7 +469,7 @@ class Arr_rational_bezier_traits_2 {
   /// Enclosure of the slope dy/dx = (Y'W - YW')/(X'W - XW') of the non-vertical arc c at its point p (false if
   /// p's parameter on c is not at hand or the enclosure of dx/dt contains 0).
   static bool slope_at(const X_monotone_curve_2& c, const Point_2& p, double& lo, double& hi) {
-    const Algebraic_real* t = nullptr;
+    const Parameter* t = nullptr;
     if (p.is_same(c.point_at_min_parameter())) t = &c.parameter_min();
     else if (p.is_same(c.point_at_max_parameter())) t = &c.parameter_max();
     else {
@@ -533,7 +535,7 @@ class Arr_rational_bezier_traits_2 {
     const Pair_entry& e = intersections(c1.supporting(), c2.supporting());
     for (const auto& ip : e.points) consider(ip.p);
     for (const auto& o : e.overlaps)
-      for (const Algebraic_real* t : {&o.s0, &o.s1}) consider(Point_2(c1.supporting(), *t));
+      for (const Parameter* t : {&o.s0, &o.s1}) consider(Point_2(c1.supporting(), *t));
     // a rational strictly between x(p) and x(bound) (they differ: refine until the enclosures separate)
     Rational xs;
     for (;;) {
@@ -593,8 +595,8 @@ class Arr_rational_bezier_traits_2 {
 
   // ------------------------------------------------------------------------------------------- constructions
   /// The arc of s on [t0, t1] (t0 < t1) with known end points.
-  static X_monotone_curve_2 make_arc(const std::shared_ptr<const Supporting>& s, const Algebraic_real& t0,
-                                     const Algebraic_real& t1, const Point_2& p0, const Point_2& p1) {
+  static X_monotone_curve_2 make_arc(const std::shared_ptr<const Supporting>& s, const Parameter& t0,
+                                     const Parameter& t1, const Point_2& p0, const Point_2& p1) {
     const int c = compare_coordinate(p0, p1, s->vertical ? 1 : 0);
     if (c == 0) throw Error("Arr_rational_bezier_traits_2: degenerate arc");
     return X_monotone_curve_2(s, t0, t1, p0, p1, c < 0);
@@ -622,10 +624,10 @@ class Arr_rational_bezier_traits_2 {
       }
       auto s = internal::make_supporting_curve(c);
       const int k = s->vertical ? 1 : 0;
-      std::vector<Algebraic_real> ts{Algebraic_real(0)};
+      std::vector<Parameter> ts{Parameter(0)};
       for (const Isolated_root& r : isolate_real_roots(s->speed[k], Rational(0), Rational(1)))
         if (r.root > 0 && r.root < 1) ts.push_back(r.root);
-      ts.push_back(Algebraic_real(1));
+      ts.push_back(Parameter(1));
       if (s->linear && ts.size() > 2) {
         // A segment traversed back and forth: its image is the segment L between its extreme control points
         // (convex hull property). The arcs are the pieces of L between the sorted positions of C(0), C(1) and
@@ -638,7 +640,7 @@ class Arr_rational_bezier_traits_2 {
         }
         const Rational m = p[imin][k], d = p[imax][k] - p[imin][k];
         auto L = internal::make_supporting_curve(Curve_2(std::vector<typename Curve_2::Point>{p[imin], p[imax]}));
-        std::vector<Algebraic_real> us;
+        std::vector<Parameter> us;
         for (const auto& t : ts) us.push_back(internal::arr_affine(Point_2(s, t).coordinate(k), m, d));
         std::sort(us.begin(), us.end());
         us.erase(std::unique(us.begin(), us.end()), us.end());
@@ -658,7 +660,7 @@ class Arr_rational_bezier_traits_2 {
    public:
     void operator()(const X_monotone_curve_2& c, const Point_2& p, X_monotone_curve_2& c1, X_monotone_curve_2& c2) const {
     BEZOUTIAN_ARR_TIME("Split_2");
-      const Algebraic_real t = parameter_of(c, p);
+      const Parameter t = parameter_of(c, p);
       X_monotone_curve_2 a = make_arc(c.supporting(), c.parameter_min(), t, c.point_at_min_parameter(), p);
       X_monotone_curve_2 b = make_arc(c.supporting(), t, c.parameter_max(), p, c.point_at_max_parameter());
       if (!c.follows_parameter()) {
@@ -683,10 +685,10 @@ class Arr_rational_bezier_traits_2 {
     using Ip = std::pair<Point_2, Multiplicity>;
     using Result = boost::variant<Ip, X_monotone_curve_2>;
     std::vector<std::pair<Point_2, Result>> out;  // key: lexicographic position
-    auto inside = [](const Algebraic_real& t, const X_monotone_curve_2& c) {
+    auto inside = [](const Parameter& t, const X_monotone_curve_2& c) {
       return t >= c.parameter_min() && t <= c.parameter_max();
     };
-    auto interior = [](const Algebraic_real& t, const X_monotone_curve_2& c) {
+    auto interior = [](const Parameter& t, const X_monotone_curve_2& c) {
       return t > c.parameter_min() && t < c.parameter_max();
     };
     const auto& A = c1.supporting();
@@ -707,8 +709,8 @@ class Arr_rational_bezier_traits_2 {
         out.push_back({c1.point_at_min_parameter(), Result(Ip(c1.point_at_min_parameter(), 0))});
       // Overlapping parameter ranges of one curve (cannot happen for arcs of one arrangement).
       if (c1.parameter_min() < c2.parameter_max() && c2.parameter_min() < c1.parameter_max()) {
-        const Algebraic_real lo = c1.parameter_min() > c2.parameter_min() ? c1.parameter_min() : c2.parameter_min();
-        const Algebraic_real hi = c1.parameter_max() < c2.parameter_max() ? c1.parameter_max() : c2.parameter_max();
+        const Parameter lo = c1.parameter_min() > c2.parameter_min() ? c1.parameter_min() : c2.parameter_min();
+        const Parameter hi = c1.parameter_max() < c2.parameter_max() ? c1.parameter_max() : c2.parameter_max();
         out.clear();
         X_monotone_curve_2 o = make_arc(A, lo, hi, Point_2(A, lo), Point_2(A, hi));
         out.push_back({o.left(), Result(o)});
@@ -749,14 +751,14 @@ class Arr_rational_bezier_traits_2 {
     using Ip = std::pair<Point_2, Multiplicity>;
     const auto& A = c1.supporting();
     const auto& B = c2.supporting();
-    auto mx = [](const Algebraic_real& a, const Algebraic_real& b) { return a > b ? a : b; };
-    auto mn = [](const Algebraic_real& a, const Algebraic_real& b) { return a < b ? a : b; };
-    const Algebraic_real smin = mn(o.s0, o.s1), smax = mx(o.s0, o.s1);
-    const Algebraic_real tmin = mn(o.t0, o.t1), tmax = mx(o.t0, o.t1);
-    const Algebraic_real tl = mx(c2.parameter_min(), tmin), th = mn(c2.parameter_max(), tmax);
+    auto mx = [](const Parameter& a, const Parameter& b) { return a > b ? a : b; };
+    auto mn = [](const Parameter& a, const Parameter& b) { return a < b ? a : b; };
+    const Parameter smin = mn(o.s0, o.s1), smax = mx(o.s0, o.s1);
+    const Parameter tmin = mn(o.t0, o.t1), tmax = mx(o.t0, o.t1);
+    const Parameter tl = mx(c2.parameter_min(), tmin), th = mn(c2.parameter_max(), tmax);
     if (tl > th) return;
     // the s on A of the points of B at tl, th
-    auto to_s = [&](const Algebraic_real& t) -> Algebraic_real {
+    auto to_s = [&](const Parameter& t) -> Parameter {
       if (t == o.t0) return o.s0;
       if (t == o.t1) return o.s1;
       const Point_2 q = t == c2.parameter_min() ? c2.point_at_min_parameter()
@@ -766,12 +768,12 @@ class Arr_rational_bezier_traits_2 {
       if (r.size() != 1) throw Invalid_input("Arr_rational_bezier_traits_2: overlap through a self-intersection (unsupported)");
       return r[0];
     };
-    const Algebraic_real u = to_s(tl), v = to_s(th);
-    const Algebraic_real lo = mx(mx(c1.parameter_min(), smin), mn(u, v));
-    const Algebraic_real hi = mn(mn(c1.parameter_max(), smax), mx(u, v));
+    const Parameter u = to_s(tl), v = to_s(th);
+    const Parameter lo = mx(mx(c1.parameter_min(), smin), mn(u, v));
+    const Parameter hi = mn(mn(c1.parameter_max(), smax), mx(u, v));
     const int c = lo.compare(hi);
     if (c > 0) return;
-    auto pt = [&](const Algebraic_real& t) {
+    auto pt = [&](const Parameter& t) {
       if (t == c1.parameter_min()) return c1.point_at_min_parameter();
       if (t == c1.parameter_max()) return c1.point_at_max_parameter();
       return Point_2(A, t);

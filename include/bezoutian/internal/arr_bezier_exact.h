@@ -20,6 +20,30 @@
 #include <utility>
 #include <vector>
 
+#ifdef BEZOUTIAN_ARR_PROFILE
+#include <chrono>
+#include <cstdio>
+namespace bezoutian { namespace internal {
+struct Arr_profile {
+  const char* name; long n = 0; double ms = 0;
+  explicit Arr_profile(const char* s) : name(s) {}
+  ~Arr_profile() { std::fprintf(stderr, "%-24s %8ld calls %9.2f ms\n", name, n, ms); }
+};
+struct Arr_timer {
+  Arr_profile& p; std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Arr_timer(Arr_profile& q) : p(q) { ++p.n; }
+  ~Arr_timer() { p.ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
+};
+}}
+#define BEZOUTIAN_ARR_CAT2(a, b) a##b
+#define BEZOUTIAN_ARR_CAT(a, b) BEZOUTIAN_ARR_CAT2(a, b)
+#define BEZOUTIAN_ARR_TIME(name)                                                    \
+  static internal::Arr_profile BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__)(name);        \
+  internal::Arr_timer BEZOUTIAN_ARR_CAT(arr_timer_, __LINE__)(BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__))
+#else
+#define BEZOUTIAN_ARR_TIME(name)
+#endif
+
 namespace bezoutian {
 namespace internal {
 
@@ -42,6 +66,10 @@ struct Arr_bezier_supporting_curve {
   /// Proved free of self-intersections: some direction v has v . C'(t) >= 0 on [0,1] (Bernstein coefficients
   /// of v . (X'W - XW', Y'W - YW') all >= 0), so v . C(t) is strictly increasing.
   bool simple = false;
+  /// Outward-rounded double enclosures of the coefficients of (W, X, Y) and of the homogeneous control net
+  /// (w, wx, wy), for the interval solver (arr_bezier_parameter.h).
+  std::array<std::vector<CGAL::Interval_nt<false>>, 3> Hd;
+  std::vector<std::array<CGAL::Interval_nt<false>, 3>> inet;
 };
 
 /// Interval de Casteljau subdivision of the homogeneous net (w, wx, wy) for the piece boxes.
@@ -195,6 +223,14 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   for (std::size_t i = 1; i < p.size() && j < p.size(); ++i)
     if ((p[i][0] - p[0][0]) * (p[j][1] - p[0][1]) != (p[i][1] - p[0][1]) * (p[j][0] - p[0][0])) s->linear = false;
   arr_piece_boxes(*s);
+  for (int k = 0; k < 3; ++k) {
+    s->Hd[k].clear();
+    for (int i = 0; i <= std::max(0, s->H[k].degree()); ++i)
+      s->Hd[k].push_back(CGAL::Interval_nt<false>(CGAL::to_interval(i <= s->H[k].degree() ? s->H[k][i] : Integer(0))));
+  }
+  for (const auto& h : c.homogeneous_control_points())
+    s->inet.push_back({CGAL::Interval_nt<false>(CGAL::to_interval(h[0])), CGAL::Interval_nt<false>(CGAL::to_interval(h[1])),
+                       CGAL::Interval_nt<false>(CGAL::to_interval(h[2]))});
   s->simple = arr_is_simple(*s);
   return s;
 }
@@ -339,9 +375,10 @@ inline int arr_compare_value(const Ci_poly1& N, const Ci_poly1& D, const Algebra
 
 /// All t in [lo, hi] (parameters, exact) where coordinate k of the curve equals v. If `point_y` is given, only
 /// those where the other coordinate equals *point_y as well. Throws if the coordinate is constant.
-inline std::vector<Algebraic_real> arr_parameters_at(const Arr_bezier_supporting_curve& S, int k, const Algebraic_real& v,
-                                                     const Algebraic_real& lo, const Algebraic_real& hi,
-                                                     const Algebraic_real* other = nullptr) {
+/// (Param: Algebraic_real or the traits' parameter type, with lower(), upper() and comparisons.)
+template <class Param>
+std::vector<Algebraic_real> arr_parameters_at(const Arr_bezier_supporting_curve& S, int k, const Algebraic_real& v,
+                                              const Param& lo, const Param& hi, const Algebraic_real* other = nullptr) {
   const Ci_poly1& N = S.num[k];
   const Ci_poly1& D = S.den[k];
   std::vector<Algebraic_real> out;
@@ -364,7 +401,7 @@ inline std::vector<Algebraic_real> arr_parameters_at(const Arr_bezier_supporting
   if (a > b) return out;
   for (const Isolated_root& r : isolate_real_roots(Q, a, b)) {
     const Algebraic_real& t = r.root;
-    if (t < lo || t > hi) continue;
+    if (lo > Param(t) || hi < Param(t)) continue;
     if (!rat) {
       // N/D at t is a root of q: it is v iff it lies in v's isolating interval (ql, qh), whose ends are not roots.
       bool keep = false;

@@ -1,0 +1,321 @@
+// Curve parameters of the arrangement traits that are exact on demand: an intersection of two supporting curves
+// found by interval subdivision and certified by Krawczyk's test is first known only by a small parameter box
+// holding exactly one transversal intersection; the exact algebraic parameters (intersect_curves, du-1989 ch. 4)
+// are computed only when an interval comparison cannot decide.
+#ifndef BEZOUTIAN_INTERNAL_ARR_BEZIER_PARAMETER_H
+#define BEZOUTIAN_INTERNAL_ARR_BEZIER_PARAMETER_H
+
+#include <bezoutian/Algebraic_real.h>
+#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/Error.h>
+#include <bezoutian/internal/arr_bezier_exact.h>
+
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+/// The exact intersections of one pair of supporting curves, computed at most once for all its lazy points.
+struct Arr_exact_pair {
+  std::shared_ptr<const Arr_bezier_supporting_curve> a, b;
+  bool done = false;
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> points;  // (s on a, t on b)
+  void compute() {
+    if (done) return;
+    BEZOUTIAN_ARR_TIME("exact pair (lazy)");
+    const Curve_intersection_result r = intersect_curves(a->curve, b->curve);
+    for (const auto& p : r.points) points.push_back({p.s, p.t});
+    done = true;
+  }
+};
+
+/// One intersection known by a closed box [s_lo, s_hi] x [t_lo, t_hi] holding exactly one common point of the
+/// two curves (Krawczyk), and its exact parameters once needed.
+struct Arr_lazy_point {
+  std::shared_ptr<Arr_exact_pair> pair;
+  std::array<Rational, 4> box;  // s_lo, s_hi, t_lo, t_hi
+  bool exact = false;
+  Algebraic_real st[2];
+  void materialize() {
+    if (exact) return;
+    BEZOUTIAN_ARR_TIME("materialize");
+    pair->compute();
+    int found = -1;
+    for (std::size_t i = 0; i < pair->points.size(); ++i) {
+      const auto& p = pair->points[i];
+      if (p.first.compare(box[0]) >= 0 && p.first.compare(box[1]) <= 0 && p.second.compare(box[2]) >= 0 &&
+          p.second.compare(box[3]) <= 0) {
+        if (found >= 0) throw Error("Arr_rational_bezier_traits_2: two exact intersections in a Krawczyk box");
+        found = int(i);
+      }
+    }
+    if (found < 0) throw Error("Arr_rational_bezier_traits_2: no exact intersection in a Krawczyk box");
+    st[0] = pair->points[found].first;
+    st[1] = pair->points[found].second;
+    exact = true;
+  }
+};
+
+/// A parameter of a supporting curve: an exact Algebraic_real, or side 0/1 (s/t) of a lazy intersection.
+/// Copies share their representation.
+class Arr_parameter {
+ public:
+  Arr_parameter() : v_(Rational(0)) {}
+  Arr_parameter(int i) : v_(Rational(i)) {}
+  Arr_parameter(const Rational& q) : v_(q) {}
+  Arr_parameter(const Algebraic_real& a) : v_(a) {}
+  Arr_parameter(std::shared_ptr<Arr_lazy_point> l, int side) : lazy_(std::move(l)), side_(side) {}
+
+  bool is_lazy() const { return lazy_ && !lazy_->exact; }
+  /// The exact number (computes it for a lazy intersection).
+  const Algebraic_real& exact() const {
+    if (!lazy_) return v_;
+    lazy_->materialize();
+    return lazy_->st[side_];
+  }
+  /// True if the number is known to be rational (never for an unresolved lazy parameter).
+  bool is_rational() const { return !is_lazy() && exact().is_rational(); }
+  Rational rational_value() const { return exact().rational_value(); }
+  /// Ends of an enclosing interval (closed for lazy parameters, open for irrational exact ones).
+  Rational lower() const { return is_lazy() ? lazy_->box[2 * side_] : exact().lower(); }
+  Rational upper() const { return is_lazy() ? lazy_->box[2 * side_ + 1] : exact().upper(); }
+  double to_double() const {
+    if (is_lazy()) return 0.5 * (CGAL::to_double(lazy_->box[2 * side_]) + CGAL::to_double(lazy_->box[2 * side_ + 1]));
+    return exact().to_double();
+  }
+  /// Shrinks the enclosing interval below width w (a lazy parameter becomes exact if its box is wider).
+  void refine_to_width(const Rational& w) const {
+    if (is_lazy() && upper() - lower() <= w) return;
+    exact().refine_to_width(w);
+  }
+  bool same_representation(const Arr_parameter& o) const {
+    if (lazy_ || o.lazy_) return lazy_ == o.lazy_ && side_ == o.side_;
+    return Algebraic_real_access::same_representation(v_, o.v_);
+  }
+
+  /// Exact comparison: identical representations, then enclosures, then exact numbers.
+  int compare(const Arr_parameter& o) const {
+    if (same_representation(o)) return 0;
+    // closed lazy boxes, open isolating intervals of irrational exact numbers, points for rationals: strict
+    // separation of the closed intervals decides in every case; exact numbers are refined (cheap) down to the
+    // width of the lazy box before the lazy one is made exact
+    for (int round = 0; round < 4 && (is_lazy() || o.is_lazy()); ++round) {
+      const Rational al = lower(), ah = upper(), bl = o.lower(), bh = o.upper();
+      if (ah < bl) return -1;
+      if (bh < al) return 1;
+      const Rational w = is_lazy() ? ah - al : bh - bl;
+      bool refined = false;
+      for (const Arr_parameter* x : {this, &o})
+        if (!x->is_lazy() && !x->exact().is_rational() && x->upper() - x->lower() > w) {
+          x->exact().refine_to_width(std::max(w, (x->upper() - x->lower()) / Rational(1 << 20)));
+          refined = true;
+        }
+      if (!refined) break;
+    }
+    return exact().compare(o.exact());
+  }
+  int compare(const Rational& q) const {
+    if (is_lazy()) {
+      if (upper() < q) return -1;
+      if (lower() > q) return 1;
+    }
+    return exact().compare(q);
+  }
+  friend bool operator<(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) < 0; }
+  friend bool operator>(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) > 0; }
+  friend bool operator<=(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) <= 0; }
+  friend bool operator>=(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) >= 0; }
+  friend bool operator==(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) == 0; }
+  friend bool operator!=(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) != 0; }
+
+ private:
+  Algebraic_real v_;
+  std::shared_ptr<Arr_lazy_point> lazy_;
+  int side_ = 0;
+};
+
+inline void arr_refine(const Arr_parameter& t) {
+  if (t.is_rational()) return;
+  t.refine_to_width((t.upper() - t.lower()) / Rational(64));
+}
+
+// ------------------------------------------------------------------------------------- interval solver
+typedef CGAL::Interval_nt<false> Arr_interval;
+using Arr_interval_net = std::vector<std::array<Arr_interval, 3>>;
+
+/// Value and derivative enclosures of the homogeneous power form (W, X, Y) at u (double interval Horner).
+inline void arr_eval_form(const Arr_bezier_supporting_curve& c, const Arr_interval& u, Arr_interval f[3],
+                          Arr_interval df[3]) {
+  for (int k = 0; k < 3; ++k) {
+    const auto& a = c.Hd[k];
+    const int n = int(a.size()) - 1;
+    Arr_interval v = a[n], d(0);
+    for (int i = n - 1; i >= 0; --i) {
+      d = d * u + v;
+      v = v * u + a[i];
+    }
+    f[k] = v;
+    df[k] = d;
+  }
+}
+
+/// Krawczyk's test (Krawczyk 1969; Moore 1977) in outward-rounded double intervals for G_k(s,t) = A_k(s) B_0(t) -
+/// B_k(t) A_0(s), k = 1, 2 on the box S x T (the same system as internal::krawczyk_unique_intersection):
+/// K(X) inside the interior of X proves exactly one zero in X, a transversal intersection. On success S, T are
+/// contracted (X <- K(X) ∩ X, which keeps the zero) `iterations` times.
+inline bool arr_krawczyk(const Arr_bezier_supporting_curve& A, const Arr_bezier_supporting_curve& B, Arr_interval& S,
+                         Arr_interval& T, int iterations) {
+  typedef Arr_interval I;
+  typename I::Protector guard;  // rounding towards +infinity for the interval operations
+  for (int round = 0; round <= iterations; ++round) {
+    const double cs = 0.5 * (S.inf() + S.sup()), ct = 0.5 * (T.inf() + T.sup());
+    I af[3], adf[3], bf[3], bdf[3], acf[3], acd[3], bcf[3], bcd[3];
+    arr_eval_form(A, S, af, adf);
+    arr_eval_form(B, T, bf, bdf);
+    arr_eval_form(A, I(cs), acf, acd);
+    arr_eval_form(B, I(ct), bcf, bcd);
+    I J[2][2], G[2];
+    for (int k = 1; k <= 2; ++k) {
+      J[k - 1][0] = adf[k] * bf[0] - bf[k] * adf[0];
+      J[k - 1][1] = af[k] * bdf[0] - bdf[k] * af[0];
+      G[k - 1] = acf[k] * bcf[0] - bcf[k] * acf[0];
+    }
+    const double m00 = CGAL::to_double(J[0][0]), m01 = CGAL::to_double(J[0][1]), m10 = CGAL::to_double(J[1][0]),
+                 m11 = CGAL::to_double(J[1][1]);
+    const double det = m00 * m11 - m01 * m10;
+    if (!std::isfinite(det) || det == 0) return round > 0;
+    const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
+    const I ds = S - I(cs), dt = T - I(ct);
+    I K[2];
+    const double c[2] = {cs, ct};
+    for (int i = 0; i < 2; ++i) {
+      const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
+      const I m0 = I(i == 0 ? 1.0 : 0.0) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
+      const I m1 = I(i == 1 ? 1.0 : 0.0) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
+      K[i] = I(c[i]) - yg + m0 * ds + m1 * dt;
+      if (!std::isfinite(K[i].inf()) || !std::isfinite(K[i].sup())) return round > 0;
+    }
+    if (round == 0 && !(K[0].inf() > S.inf() && K[0].sup() < S.sup() && K[1].inf() > T.inf() && K[1].sup() < T.sup()))
+      return false;
+    const I S2(std::max(S.inf(), K[0].inf()), std::min(S.sup(), K[0].sup()));
+    const I T2(std::max(T.inf(), K[1].inf()), std::min(T.sup(), K[1].sup()));
+    const bool progress = S2.sup() - S2.inf() < 0.99 * (S.sup() - S.inf()) || T2.sup() - T2.inf() < 0.99 * (T.sup() - T.inf());
+    S = S2;
+    T = T2;
+    if (!progress && round > 0) break;
+  }
+  return true;
+}
+
+/// Control box of an interval net (false if a weight enclosure is not positive).
+inline bool arr_net_box(const Arr_interval_net& net, double b[4]) {
+  b[0] = b[2] = HUGE_VAL;
+  b[1] = b[3] = -HUGE_VAL;
+  for (const auto& h : net) {
+    if (!(h[0].inf() > 0)) return false;
+    const Arr_interval x = h[1] / h[0], y = h[2] / h[0];
+    b[0] = std::min(b[0], x.inf());
+    b[1] = std::max(b[1], x.sup());
+    b[2] = std::min(b[2], y.inf());
+    b[3] = std::max(b[3], y.sup());
+  }
+  return std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
+}
+
+/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves).
+inline void arr_net_halves(const Arr_interval_net& q, Arr_interval_net& left, Arr_interval_net& right) {
+  Arr_interval_net tri = q;
+  const std::size_t n = q.size();
+  left.assign(1, tri[0]);
+  right.assign(1, tri[n - 1]);
+  const Arr_interval half(0.5);
+  for (std::size_t r = 1; r < n; ++r) {
+    for (std::size_t j = 0; j + r < n; ++j)
+      for (int k = 0; k < 3; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
+    left.push_back(tri[0]);
+    right.push_back(tri[n - 1 - r]);
+  }
+  std::reverse(right.begin(), right.end());
+}
+
+/// Certified transversal intersections of two different supporting curves by interval subdivision: every cell
+/// pair of parameter squares whose control boxes meet is either excluded after halving or holds, in a slightly
+/// enlarged box, exactly one zero (Krawczyk), contracted to a tiny box. Returns false (caller: exact path) when
+/// this does not settle everything: tangencies, overlaps, intersections at or near parameter 0 or 1, boxes of
+/// two cells that meet without a common proof, or a work budget exceeded.
+struct Arr_interval_solver {
+  const Arr_bezier_supporting_curve& A;
+  const Arr_bezier_supporting_curve& B;
+  std::vector<std::array<double, 4>> found;  // s_lo, s_hi, t_lo, t_hi
+  int budget = 4000;
+  bool failed = false;
+
+  /// Call with the whole nets on [0,1] x [0,1] and depth 0.
+  void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
+    typename Arr_interval::Protector guard;
+    if (failed) return;
+    if (--budget < 0) {
+      failed = true;
+      return;
+    }
+    double ba[4], bb[4];
+    if (!arr_net_box(na, ba) || !arr_net_box(nb, bb)) {
+      failed = true;
+      return;
+    }
+    if (ba[1] < bb[0] || bb[1] < ba[0] || ba[3] < bb[2] || bb[3] < ba[2]) return;
+    if (depth >= 2) {
+      // enlarged cell: a zero on the cell boundary lies in its interior
+      const double es = 0.0625 * (s1 - s0), et = 0.0625 * (t1 - t0);
+      Arr_interval S(s0 - es, s1 + es), T(t0 - et, t1 + et);
+      if (arr_krawczyk(A, B, S, T, 16)) {
+        add(S, T);
+        return;
+      }
+    }
+    if (depth >= 24) {
+      failed = true;
+      return;
+    }
+    Arr_interval_net al, ar, bl, br;
+    arr_net_halves(na, al, ar);
+    arr_net_halves(nb, bl, br);
+    const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
+    run(al, s0, sm, bl, t0, tm, depth + 1);
+    run(al, s0, sm, br, tm, t1, depth + 1);
+    run(ar, sm, s1, bl, t0, tm, depth + 1);
+    run(ar, sm, s1, br, tm, t1, depth + 1);
+  }
+
+  void add(const Arr_interval& S, const Arr_interval& T) {
+    // outside [0,1]^2: not an intersection of the arcs; straddling the border: undecided here
+    if (S.sup() < 0 || S.inf() > 1 || T.sup() < 0 || T.inf() > 1) return;
+    if (!(S.inf() > 0 && S.sup() < 1 && T.inf() > 0 && T.sup() < 1)) {
+      failed = true;
+      return;
+    }
+    for (auto& f : found) {
+      if (S.sup() < f[0] || f[1] < S.inf() || T.sup() < f[2] || f[3] < T.inf()) continue;
+      // the boxes meet: one zero if Krawczyk proves uniqueness on their hull
+      Arr_interval HS(std::min(S.inf(), f[0]), std::max(S.sup(), f[1])), HT(std::min(T.inf(), f[2]), std::max(T.sup(), f[3]));
+      const double es = HS.sup() - HS.inf(), et = HT.sup() - HT.inf();
+      HS = Arr_interval(HS.inf() - es, HS.sup() + es);
+      HT = Arr_interval(HT.inf() - et, HT.sup() + et);
+      if (!arr_krawczyk(A, B, HS, HT, 0)) failed = true;
+      return;
+    }
+    found.push_back({S.inf(), S.sup(), T.inf(), T.sup()});
+  }
+};
+
+}  // namespace internal
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_INTERNAL_ARR_BEZIER_PARAMETER_H
