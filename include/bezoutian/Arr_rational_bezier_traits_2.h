@@ -304,10 +304,16 @@ class Arr_rational_bezier_traits_2 {
     const bool disjoint = a != b && internal::arr_pieces_disjoint(*a, *b, 0, 0, 0);
     if (disjoint || (a == b && (a->linear || a->simple)))  // (an arc of a line segment has no self-intersection)
       return cache_->pairs.emplace(key, Pair_entry()).first->second;
-    if (a != b) {  // interval subdivision and Krawczyk: exact parameters only on demand
+    {  // interval subdivision and Krawczyk: exact parameters only on demand
       BEZOUTIAN_ARR_TIME("interval solver");
       internal::Arr_interval_solver solver{*a, *b, {}};
-      solver.run(a->inet, 0, 1, b->inet, 0, 1, 0);
+      internal::Arr_self_interval_solver self_solver{*a, {}};
+      if (a != b) solver.run(a->inet, 0, 1, b->inet, 0, 1, 0);
+      else self_solver.run(a->inet, 0, 1, a->inet, 0, 1, 0);
+      if (a == b) {
+        solver.failed = self_solver.failed;
+        solver.found = self_solver.found;
+      }
       if (!solver.failed) {
         auto pair = std::make_shared<internal::Arr_exact_pair>();
         pair->a = a;

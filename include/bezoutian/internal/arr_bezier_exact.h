@@ -70,7 +70,26 @@ struct Arr_bezier_supporting_curve {
   /// (w, wx, wy), for the interval solver (arr_bezier_parameter.h).
   std::array<std::vector<CGAL::Interval_nt<false>>, 3> Hd;
   std::vector<std::array<CGAL::Interval_nt<false>, 3>> inet;
+  /// For curves not proved simple: the divided differences F_k(s,t) = (X_k(s) W(t) - X_k(t) W(s)) / (s - t),
+  /// k = 1, 2, whose common zeros off the diagonal are the self-intersections; fd[k-1][p][q] encloses the
+  /// coefficient of s^p t^q.
+  std::array<std::vector<std::vector<CGAL::Interval_nt<false>>>, 2> fd;
 };
+
+/// The divided difference (X(s) W(t) - X(t) W(s)) / (s - t) as a coefficient matrix (exact): with
+/// c_ij = x_i w_j - w_i x_j (antisymmetric), s^i t^j - s^j t^i = (s - t) s^j t^j sum_{m < i-j} s^m t^(i-j-1-m).
+inline std::vector<std::vector<Integer>> arr_divided_difference(const Ci_poly1& X, const Ci_poly1& W) {
+  const int n = std::max(X.degree(), W.degree());
+  auto co = [](const Ci_poly1& f, int i) { return i <= f.degree() ? f[i] : Integer(0); };
+  std::vector<std::vector<Integer>> f(std::max(n, 1), std::vector<Integer>(std::max(n, 1), Integer(0)));
+  for (int i = 1; i <= n; ++i)
+    for (int j = 0; j < i; ++j) {
+      const Integer c = co(X, i) * co(W, j) - co(W, i) * co(X, j);
+      if (CGAL::is_zero(c)) continue;
+      for (int m = 0; m < i - j; ++m) f[j + m][i - 1 - m] += c;
+    }
+  return f;
+}
 
 /// Interval de Casteljau subdivision of the homogeneous net (w, wx, wy) for the piece boxes.
 inline void arr_piece_boxes(Arr_bezier_supporting_curve& s) {
@@ -228,6 +247,13 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
     for (int i = 0; i <= std::max(0, s->H[k].degree()); ++i)
       s->Hd[k].push_back(CGAL::Interval_nt<false>(CGAL::to_interval(i <= s->H[k].degree() ? s->H[k][i] : Integer(0))));
   }
+  if (!s->simple && !s->linear)
+    for (int k = 1; k <= 2; ++k) {
+      const auto f = arr_divided_difference(s->H[k], s->H[0]);
+      s->fd[k - 1].assign(f.size(), std::vector<CGAL::Interval_nt<false>>(f.size()));
+      for (std::size_t i = 0; i < f.size(); ++i)
+        for (std::size_t j = 0; j < f.size(); ++j) s->fd[k - 1][i][j] = CGAL::Interval_nt<false>(CGAL::to_interval(f[i][j]));
+    }
   for (const auto& h : c.homogeneous_control_points())
     s->inet.push_back({CGAL::Interval_nt<false>(CGAL::to_interval(h[0])), CGAL::Interval_nt<false>(CGAL::to_interval(h[1])),
                        CGAL::Interval_nt<false>(CGAL::to_interval(h[2]))});

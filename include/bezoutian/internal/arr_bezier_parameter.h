@@ -30,7 +30,7 @@ struct Arr_exact_pair {
   void compute() {
     if (done) return;
     BEZOUTIAN_ARR_TIME("exact pair (lazy)");
-    const Curve_intersection_result r = intersect_curves(a->curve, b->curve);
+    const Curve_intersection_result r = a == b ? self_intersections(a->curve) : intersect_curves(a->curve, b->curve);
     for (const auto& p : r.points) points.push_back({p.s, p.t});
     done = true;
   }
@@ -309,6 +309,137 @@ struct Arr_interval_solver {
       HS = Arr_interval(HS.inf() - es, HS.sup() + es);
       HT = Arr_interval(HT.inf() - et, HT.sup() + et);
       if (!arr_krawczyk(A, B, HS, HT, 0)) failed = true;
+      return;
+    }
+    found.push_back({S.inf(), S.sup(), T.inf(), T.sup()});
+  }
+};
+
+/// Enclosures of F(S, T), dF/ds, dF/dt for a bivariate coefficient matrix f[p][q] (s^p t^q).
+inline void arr_eval_bivariate(const std::vector<std::vector<Arr_interval>>& f, const Arr_interval& S,
+                               const Arr_interval& T, Arr_interval& v, Arr_interval& ds, Arr_interval& dt) {
+  const int n = int(f.size()) - 1;
+  v = ds = dt = Arr_interval(0);
+  for (int p = n; p >= 0; --p) {
+    Arr_interval r = f[p][n], dr(0);
+    for (int q = n - 1; q >= 0; --q) {
+      dr = dr * T + r;
+      r = r * T + f[p][q];
+    }
+    ds = ds * S + v;
+    v = v * S + r;
+    dt = dt * S + dr;
+  }
+}
+
+/// Krawczyk's test for the self-intersection system F_1 = F_2 = 0 (divided differences) on S x T; as
+/// arr_krawczyk.
+inline bool arr_krawczyk_self(const Arr_bezier_supporting_curve& A, Arr_interval& S, Arr_interval& T, int iterations) {
+  typedef Arr_interval I;
+  typename I::Protector guard;
+  for (int round = 0; round <= iterations; ++round) {
+    const double cs = 0.5 * (S.inf() + S.sup()), ct = 0.5 * (T.inf() + T.sup());
+    I J[2][2], G[2], d1, d2;
+    for (int k = 0; k < 2; ++k) {
+      arr_eval_bivariate(A.fd[k], S, T, d1, J[k][0], J[k][1]);
+      arr_eval_bivariate(A.fd[k], I(cs), I(ct), G[k], d1, d2);
+    }
+    const double m00 = CGAL::to_double(J[0][0]), m01 = CGAL::to_double(J[0][1]), m10 = CGAL::to_double(J[1][0]),
+                 m11 = CGAL::to_double(J[1][1]);
+    const double det = m00 * m11 - m01 * m10;
+    if (!std::isfinite(det) || det == 0) return round > 0;
+    const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
+    const I ds = S - I(cs), dt = T - I(ct);
+    I K[2];
+    const double c[2] = {cs, ct};
+    for (int i = 0; i < 2; ++i) {
+      const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
+      const I m0 = I(i == 0 ? 1.0 : 0.0) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
+      const I m1 = I(i == 1 ? 1.0 : 0.0) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
+      K[i] = I(c[i]) - yg + m0 * ds + m1 * dt;
+      if (!std::isfinite(K[i].inf()) || !std::isfinite(K[i].sup())) return round > 0;
+    }
+    if (round == 0 && !(K[0].inf() > S.inf() && K[0].sup() < S.sup() && K[1].inf() > T.inf() && K[1].sup() < T.sup()))
+      return false;
+    const I S2(std::max(S.inf(), K[0].inf()), std::min(S.sup(), K[0].sup()));
+    const I T2(std::max(T.inf(), K[1].inf()), std::min(T.sup(), K[1].sup()));
+    const bool progress = S2.sup() - S2.inf() < 0.99 * (S.sup() - S.inf()) || T2.sup() - T2.inf() < 0.99 * (T.sup() - T.inf());
+    S = S2;
+    T = T2;
+    if (!progress && round > 0) break;
+  }
+  return true;
+}
+
+/// Certified self-intersections C(s) = C(t), s < t, of a supporting curve by interval subdivision of the
+/// triangle s <= t: a cell is excluded by disjoint control boxes of its two pieces or by an enclosure of F_1 or
+/// F_2 without 0 (the divided differences: off the diagonal their common zeros are the self-intersections, on it
+/// the singular points), or it holds, enlarged, exactly one zero (Krawczyk), which must then lie strictly
+/// inside (0,1)^2 and off the diagonal. `failed` as for Arr_interval_solver.
+struct Arr_self_interval_solver {
+  const Arr_bezier_supporting_curve& A;
+  std::vector<std::array<double, 4>> found;
+  int budget = 4000;
+  bool failed = false;
+
+  void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
+    typedef Arr_interval I;
+    typename I::Protector guard;
+    if (failed || t1 < s0) return;  // only s <= t
+    if (--budget < 0 || A.fd[0].empty()) {
+      failed = true;
+      return;
+    }
+    if (s1 <= t0) {  // pieces meet at most at one end: control boxes
+      double ba[4], bb[4];
+      if (!arr_net_box(na, ba) || !arr_net_box(nb, bb)) {
+        failed = true;
+        return;
+      }
+      if (ba[1] < bb[0] || bb[1] < ba[0] || ba[3] < bb[2] || bb[3] < ba[2]) return;
+    }
+    const I S(s0, s1), T(t0, t1);
+    for (int k = 0; k < 2; ++k) {
+      I v, d1, d2;
+      arr_eval_bivariate(A.fd[k], S, T, v, d1, d2);
+      if (v.inf() > 0 || v.sup() < 0) return;
+    }
+    if (depth >= 2) {
+      const double es = 0.0625 * (s1 - s0), et = 0.0625 * (t1 - t0);
+      I Sx(s0 - es, s1 + es), Tx(t0 - et, t1 + et);
+      if (arr_krawczyk_self(A, Sx, Tx, 16)) {
+        add(Sx, Tx);
+        return;
+      }
+    }
+    if (depth >= 24) {
+      failed = true;
+      return;
+    }
+    Arr_interval_net al, ar, bl, br;
+    arr_net_halves(na, al, ar);
+    arr_net_halves(nb, bl, br);
+    const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
+    run(al, s0, sm, bl, t0, tm, depth + 1);
+    run(al, s0, sm, br, tm, t1, depth + 1);
+    run(ar, sm, s1, bl, t0, tm, depth + 1);
+    run(ar, sm, s1, br, tm, t1, depth + 1);
+  }
+
+  void add(const Arr_interval& S, const Arr_interval& T) {
+    if (S.sup() < 0 || S.inf() > 1 || T.sup() < 0 || T.inf() > 1) return;
+    if (T.sup() < S.inf()) return;  // the mirror image (t, s) of a zero
+    if (!(S.inf() > 0 && S.sup() < 1 && T.inf() > 0 && T.sup() < 1 && S.sup() < T.inf())) {
+      failed = true;
+      return;
+    }
+    for (auto& f : found) {
+      if (S.sup() < f[0] || f[1] < S.inf() || T.sup() < f[2] || f[3] < T.inf()) continue;
+      Arr_interval HS(std::min(S.inf(), f[0]), std::max(S.sup(), f[1])), HT(std::min(T.inf(), f[2]), std::max(T.sup(), f[3]));
+      const double es = HS.sup() - HS.inf(), et = HT.sup() - HT.inf();
+      HS = Arr_interval(HS.inf() - es, HS.sup() + es);
+      HT = Arr_interval(HT.inf() - et, HT.sup() + et);
+      if (!arr_krawczyk_self(A, HS, HT, 0)) failed = true;
       return;
     }
     found.push_back({S.inf(), S.sup(), T.inf(), T.sup()});
