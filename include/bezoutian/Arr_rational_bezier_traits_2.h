@@ -427,8 +427,52 @@ class Arr_rational_bezier_traits_2 {
     return false;
   }
 
+  /// Double-interval version of enclose_y_over + the comparison with p (0: undecided): parameters ra < rb inside
+  /// the arc with x(ra), x(rb) proved on both sides of p's abscissa enclosure bracket the arc's parameter at
+  /// x(p), so y(p) is compared with an enclosure of y on [ra, rb].
+  static int double_compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
+    double xl, xh, yl, yh;
+    if (!p.enclose_double(0, xl, xh) || !p.enclose_double(1, yl, yh)) return 0;
+    const Supporting& S = *c.supporting();
+    const double target = 0.5 * (xl + xh);
+    const double t0 = CGAL::to_interval(c.parameter_min().upper()).second;
+    const double t1 = CGAL::to_interval(c.parameter_max().lower()).first;
+    double a = t0, b = t1;
+    const bool inc = c.is_increasing();
+    for (int i = 0; i < 60 && b - a > 1e-15; ++i) {
+      const double m = 0.5 * (a + b);
+      const double xm = S.curve.evaluate(m)[0];
+      if ((xm < target) == inc) a = m;
+      else b = m;
+    }
+    const double tau = 0.5 * (a + b);
+    typedef CGAL::Interval_nt<false> I;
+    typename I::Protector guard;
+    auto ev = [](const internal::Ci_poly1& f, const I& u) {
+      I v(CGAL::to_interval(f[f.degree()]));
+      for (int i = f.degree() - 1; i >= 0; --i) v = v * u + I(CGAL::to_interval(f[i]));
+      return v;
+    };
+    for (double delta = 1e-13; delta < 1e-2; delta *= 64) {
+      const double ra = tau - delta, rb = tau + delta;
+      if (!(ra > t0) || !(rb < t1)) return 0;
+      const I xa = ev(S.num[0], I(ra)) / ev(S.den[0], I(ra)), xb = ev(S.num[0], I(rb)) / ev(S.den[0], I(rb));
+      const bool bracket = inc ? (xa.sup() < xl && xb.inf() > xh) : (xa.inf() > xh && xb.sup() < xl);
+      if (!bracket) continue;
+      const I u(ra, rb), d = ev(S.den[1], u);
+      if (!(d.inf() > 0) && !(d.sup() < 0)) return 0;
+      const I y = ev(S.num[1], u) / d;
+      if (yh < y.inf()) return -1;
+      if (yl > y.sup()) return 1;
+      return 0;
+    }
+    return 0;
+  }
+
   /// Filter for compare_y_at_x (0: undecided).
   static int filtered_compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
+    const int f = double_compare_y_at_x(p, c);
+    if (f != 0) return f;
     Rational xl, xh, yl, yh, lo, hi;
     p.enclose(0, xl, xh);
     p.enclose(1, yl, yh);
@@ -512,6 +556,20 @@ class Arr_rational_bezier_traits_2 {
     return true;
   }
 
+  /// Sign of the derivative numerator speed[k] (X_k' W - X_k W') at the parameter t by interval evaluation
+  /// (0: not decided).
+  static int speed_sign(const Supporting& S, int k, const Parameter& t) {
+    if (!t.is_rational() && CGAL::to_double(t.upper() - t.lower()) > 1e-12) t.refine_to_width(Rational(std::ldexp(1.0, -42)));
+    typedef CGAL::Interval_nt<false> I;
+    typename I::Protector guard;
+    const I u = t.is_rational() ? I(CGAL::to_interval(t.rational_value()))
+                                : I(CGAL::to_interval(t.lower()).first, CGAL::to_interval(t.upper()).second);
+    const internal::Ci_poly1& f = S.speed[k];
+    I v(CGAL::to_interval(f[f.degree()]));
+    for (int i = f.degree() - 1; i >= 0; --i) v = v * u + I(CGAL::to_interval(f[i]));
+    return v.inf() > 0 ? 1 : (v.sup() < 0 ? -1 : 0);
+  }
+
   /// Order of two non-vertical arcs through p just right (right = true) or left of p. A rational abscissa x* is
   /// chosen strictly between x(p) and every other abscissa where the supporting curves meet or an arc ends, so
   /// that the two arcs neither cross nor end on the open slab between x(p) and x*; comparing their exact
@@ -527,6 +585,24 @@ class Arr_rational_bezier_traits_2 {
     if (slope_at(c1, p, sl1, sh1) && slope_at(c2, p, sl2, sh2)) {
       if (sh1 < sl2) return -dir;
       if (sh2 < sl1) return dir;
+    }
+    // Two arcs of one curve ending at p with a common parameter t_p (a turning point of x, vertical tangent):
+    // y - y(p) ~ y'(t_p) (t - t_p) while x - x(p) is of higher order, so the arc along which y increases from p
+    // is above on either side.
+    if (c1.supporting() == c2.supporting()) {
+      const Parameter* tp = nullptr;
+      int d1 = 0;
+      if (c1.parameter_max().same_representation(c2.parameter_min()) && p.is_same(c1.point_at_max_parameter())) {
+        tp = &c1.parameter_max();
+        d1 = -1;
+      } else if (c1.parameter_min().same_representation(c2.parameter_max()) && p.is_same(c1.point_at_min_parameter())) {
+        tp = &c1.parameter_min();
+        d1 = 1;
+      }
+      if (tp) {
+        const int sy = speed_sign(*c1.supporting(), 1, *tp);
+        if (sy != 0) return sy * d1;
+      }
     }
     // the nearest abscissa beyond p where something happens, as a point
     Point_2 bound = right ? (cmp_x(c1.right(), c2.right()) < 0 ? c1.right() : c2.right())

@@ -152,22 +152,20 @@ inline bool arr_pieces_disjoint(const Arr_bezier_supporting_curve& a, const Arr_
   return true;
 }
 
-/// Bernstein coefficients (degree = deg f, or 0 for f = 0) of an integer polynomial on [0,1], exact.
+/// Positive multiples C(n,j) b_j of the Bernstein coefficients b_j (degree n >= deg f) of an integer polynomial
+/// on [0,1], exact: C(j,i)/C(n,i) = C(n-i,j-i)/C(n,j) gives C(n,j) b_j = sum_{i <= j} C(n-i, j-i) a_i.
 inline std::vector<Rational> arr_bernstein(const Ci_poly1& f, int n) {
-  std::vector<Rational> b(n + 1, Rational(0));
-  // b_j = sum_{i <= j} C(j,i) / C(n,i) a_i
-  std::vector<Rational> cn(n + 1);
-  Rational c(1);
+  std::vector<std::vector<Integer>> C(n + 1);  // Pascal's triangle
   for (int i = 0; i <= n; ++i) {
-    cn[i] = c;
-    c = c * Rational(n - i) / Rational(i + 1);
+    C[i].assign(i + 1, Integer(1));
+    for (int j = 1; j < i; ++j) C[i][j] = C[i - 1][j - 1] + C[i - 1][j];
   }
+  std::vector<Rational> b(n + 1);
   for (int j = 0; j <= n; ++j) {
-    Rational cj(1);
-    for (int i = 0; i <= j; ++i) {
-      if (i <= f.degree()) b[j] += cj / cn[i] * Rational(f[i]);
-      cj = cj * Rational(j - i) / Rational(i + 1);
-    }
+    Integer acc(0);
+    for (int i = 0; i <= j && i <= f.degree(); ++i)
+      if (!CGAL::is_zero(f[i])) acc += C[n - i][j - i] * f[i];
+    b[j] = Rational(acc);
   }
   return b;
 }
@@ -192,12 +190,65 @@ inline bool arr_is_simple(const Arr_bezier_supporting_curve& s) {
     }
   if (gap < pi - 1e-9) return false;
   const Rational vx(-std::cos(mid)), vy(-std::sin(mid));  // opposite the middle of the empty gap
+  {
+    // filter: the same test on outward-rounded enclosures of the coefficients
+    typedef CGAL::Interval_nt<false> I;
+    typename I::Protector guard;
+    const I ix(-std::cos(mid)), iy(-std::sin(mid));
+    bool all_nonneg = true, some_pos = false;
+    for (int j = 0; j <= n && all_nonneg; ++j) {
+      const I d = ix * I(CGAL::to_interval(bx[j])) + iy * I(CGAL::to_interval(by[j]));
+      if (!(d.inf() >= 0)) all_nonneg = false;
+      if (d.inf() > 0) some_pos = true;
+    }
+    if (all_nonneg && some_pos) return true;
+  }
   for (int j = 0; j <= n; ++j)
     if (CGAL::sign(vx * bx[j] + vy * by[j]) < 0) return false;
   // v . C' is then >= 0 on [0,1]; it is not identically 0 since some coefficient is positive or all are 0
   for (int j = 0; j <= n; ++j)
     if (CGAL::sign(vx * bx[j] + vy * by[j]) > 0) return true;
   return false;
+}
+
+/// Integer homogeneous power form (W, X, Y) of a plane curve: the net scaled by the positive lcm L of its
+/// denominators, then a_k = C(n,k) sum_{i <= k} (-1)^(k-i) C(k,i) p_i (Bernstein to power basis), in integers.
+/// The same projective curve as integer_power_form (a positive multiple).
+inline std::array<Ci_poly1, 3> arr_integer_power_form(const Rational_bezier_curve_2<Rational>& c) {
+  const auto& net = c.homogeneous_control_points();
+  const int n = int(net.size()) - 1;
+  Integer L(1);
+  for (const auto& h : net)
+    for (int k = 0; k < 3; ++k) {
+      const Integer d(mpq_denref(h[k].mpq()));
+      if (d != 1) L = CGAL::div(L * d, CGAL::gcd(L, d));
+    }
+  std::vector<std::array<Integer, 3>> p(n + 1);
+  for (int i = 0; i <= n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const Integer num(mpq_numref(net[i][k].mpq())), den(mpq_denref(net[i][k].mpq()));
+      p[i][k] = den == 1 ? num * L : num * CGAL::integral_division(L, den);
+    }
+  std::vector<std::vector<Integer>> C(n + 1);  // Pascal's triangle
+  for (int i = 0; i <= n; ++i) {
+    C[i].assign(i + 1, Integer(1));
+    for (int j = 1; j < i; ++j) C[i][j] = C[i - 1][j - 1] + C[i - 1][j];
+  }
+  std::array<Ci_poly1, 3> r;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Integer> co(n + 1);
+    for (int m = 0; m <= n; ++m) {
+      Integer acc(0);
+      for (int i = 0; i <= m; ++i) {
+        if (CGAL::is_zero(p[i][k])) continue;
+        if ((m - i) % 2 == 0) acc += C[m][i] * p[i][k];
+        else acc -= C[m][i] * p[i][k];
+      }
+      co[m] = C[n][m] * acc;
+    }
+    r[k] = Ci_poly1(co.begin(), co.end());
+  }
+  return r;
 }
 
 inline Ci_poly1 arr_primitive(const Ci_poly1& f) {
@@ -213,7 +264,7 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   auto s = std::make_shared<Arr_bezier_supporting_curve>();
   s->id = ++counter;
   s->curve = c;
-  s->H = integer_power_form<2>(c);
+  s->H = arr_integer_power_form(c);
   const Ci_poly1& W = s->H[0];
   for (int k = 0; k < 2; ++k) {
     const Ci_poly1& X = s->H[k + 1];

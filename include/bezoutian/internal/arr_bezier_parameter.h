@@ -67,11 +67,11 @@ struct Arr_lazy_point {
 /// Copies share their representation.
 class Arr_parameter {
  public:
-  Arr_parameter() : v_(Rational(0)) {}
-  Arr_parameter(int i) : v_(Rational(i)) {}
+  Arr_parameter() : v_(constant(0)) {}
+  Arr_parameter(int i) : v_(i == 0 || i == 1 ? constant(i) : Algebraic_real(Rational(i))) {}
   Arr_parameter(const Rational& q) : v_(q) {}
   Arr_parameter(const Algebraic_real& a) : v_(a) {}
-  Arr_parameter(std::shared_ptr<Arr_lazy_point> l, int side) : lazy_(std::move(l)), side_(side) {}
+  Arr_parameter(std::shared_ptr<Arr_lazy_point> l, int side) : v_(constant(0)), lazy_(std::move(l)), side_(side) {}
 
   bool is_lazy() const { return lazy_ && !lazy_->exact; }
   /// The exact number (computes it for a lazy intersection).
@@ -136,6 +136,11 @@ class Arr_parameter {
   friend bool operator!=(const Arr_parameter& a, const Arr_parameter& b) { return a.compare(b) != 0; }
 
  private:
+  // shared exact 0 and 1 (copies share the representation: no allocation per parameter)
+  static const Algebraic_real& constant(int i) {
+    static const Algebraic_real zero(0), one(1);
+    return i == 0 ? zero : one;
+  }
   Algebraic_real v_;
   std::shared_ptr<Arr_lazy_point> lazy_;
   int side_ = 0;
