@@ -28,7 +28,9 @@ struct Parameter_box {
 
 /// A vertex of the curve inside the box.
 struct Curve_topology_vertex {
-  enum Kind { regular, singular, boundary, isolated };
+  /// phantom_cut: the curve continues into a region proved free of genuine points (excluded_regions) and is not
+  /// followed there.
+  enum Kind { regular, singular, boundary, isolated, phantom_cut };
   Kind kind = regular;
   /// Certified enclosure of the point: u in [u_lo,u_hi], v in [v_lo,v_hi] (rationals converted outward to double).
   double u = 0, v = 0, u_lo = 0, u_hi = 0, v_lo = 0, v_hi = 0;
@@ -47,7 +49,7 @@ struct Curve_topology_edge {
 
 /// A connected component of (D = 0) ∩ box.
 struct Curve_topology_component {
-  bool closed = false;                ///< does not meet the box boundary
+  bool closed = false;                ///< does not meet the box boundary (nor an excluded region)
   bool isolated_point = false;        ///< a single real point (acnode)
   std::vector<std::size_t> edges;     ///< indices into Curve_topology_in_box::edges
   std::vector<std::size_t> vertices;  ///< indices into Curve_topology_in_box::vertices
@@ -59,6 +61,9 @@ struct Curve_topology_in_box {
   std::vector<Curve_topology_vertex> vertices;
   std::vector<Curve_topology_edge> edges;
   std::vector<Curve_topology_component> components;
+  /// Regions of the box where D = 0 was not analysed because they are proved to hold no genuine point of the
+  /// locus (no partner in the partner domain); arcs end there at phantom_cut vertices.
+  std::vector<Parameter_box> excluded_regions;
   std::size_t number_of_singular_points() const {
     return std::count_if(vertices.begin(), vertices.end(),
                          [](const Curve_topology_vertex& v) { return v.kind == Curve_topology_vertex::singular; });
@@ -103,7 +108,8 @@ inline void assign_components(Curve_topology_in_box& out) {
     auto it = comp_of_root.find(find(i));
     if (it == comp_of_root.end()) continue;
     out.components[it->second].vertices.push_back(i);
-    if (out.vertices[i].on_boundary) out.components[it->second].closed = false;
+    if (out.vertices[i].on_boundary || out.vertices[i].kind == Curve_topology_vertex::phantom_cut)
+      out.components[it->second].closed = false;
   }
 }
 

@@ -63,6 +63,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,6 +87,11 @@ struct Subdivision_topology_options {
   /// distinct partners (Krawczyk's test on the 6 x 6 system). Without it (or when it fails), only rational
   /// critical points are proved (exactly); others leave the result not certified.
   std::function<bool(const Parameter_box&, const std::array<double, 2>&)> singular_point_witness;
+  /// Optional: true only if it proves that a sub-box holds no genuine point of the locus (e.g. no partner in the
+  /// partner domain, internal/double_partner_witness.h). Such a box is not analysed: it is recorded in
+  /// Curve_topology_in_box::excluded_regions and the arcs that enter it end at phantom_cut vertices.
+  std::function<bool(const Parameter_box&)> no_genuine_points;
+  int genuine_test_depth = 3;  ///< the test is tried on boxes that are neither excluded nor simple from this depth
 };
 
 /// Result of subdivide_curve_in_box().
@@ -178,6 +184,9 @@ class Subdivision_topology {
       const bool dv = b_ >= 1 && difference_sign(g, false) != 0;
       const bool du = a_ >= 1 && difference_sign(g, true) != 0;
       if ((dv || du) && resolve(B, dv)) continue;
+      if (!failed_ && o_.no_genuine_points && B.depth >= o_.genuine_test_depth &&
+          o_.no_genuine_points(Parameter_box{B.u0, B.u1, B.v0, B.v1}) && excise(B))
+        continue;
       if (!failed_ && B.depth >= o_.singular_analysis_depth && resolve_singular(B)) continue;
       if (failed_) {
         res.reason = failure_;
@@ -511,6 +520,18 @@ class Subdivision_topology {
     return true;
   }
 
+  // A box proved free of genuine points: its edge crossings become phantom_cut vertices (the arcs of the
+  // neighbouring boxes end there). False (the box is then split) if a crossing is at a corner or multiple.
+  bool excise(const Box& B) {
+    std::vector<Crossing> cr;
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+      return false;
+    for (const Crossing& c : cr) cut_.insert(node(c.vertical, c.c, c.index));
+    excised_.push_back(Parameter_box{B.u0, B.u1, B.v0, B.v1});
+    return true;
+  }
+
   // ---- singular and isolated points (see the header comment) ----
   struct Singular_point {
     Rational u_lo, u_hi, v_lo, v_hi;  // certified enclosure of p
@@ -805,6 +826,7 @@ class Subdivision_topology {
     }
     if (!zero_proved && o_.singular_point_witness)
       zero_proved = o_.singular_point_witness(Parameter_box{B.u0, B.u1, B.v0, B.v1}, approx);
+    if (!zero_proved && o_.no_genuine_points && B.depth < 16) return false;  // it may yet be excluded as phantom
     if (!zero_proved) {
       fail("D has a nondegenerate critical point at (" + std::to_string(approx[0]) + ", " + std::to_string(approx[1]) +
            ") where |D| is below the interval resolution; D = 0 there (a node or an isolated point) could not be "
@@ -906,7 +928,8 @@ class Subdivision_topology {
     v.u = 0.5 * (v.u_lo + v.u_hi);
     v.v = 0.5 * (v.v_lo + v.v_hi);
     v.on_boundary = on_domain_boundary(n);
-    v.kind = v.on_boundary ? Curve_topology_vertex::boundary : Curve_topology_vertex::regular;
+    v.kind = v.on_boundary ? Curve_topology_vertex::boundary
+                           : (cut_.count(n) ? Curve_topology_vertex::phantom_cut : Curve_topology_vertex::regular);
     return v;
   }
 
@@ -924,8 +947,16 @@ class Subdivision_topology {
       at[arcs_[k].n0].push_back(k);
       at[arcs_[k].n1].push_back(k);
     }
-    auto is_stop = [&](std::size_t n) { return on_domain_boundary(n) || keys_[n].singular; };
+    out.excluded_regions = excised_;
+    auto is_stop = [&](std::size_t n) { return on_domain_boundary(n) || keys_[n].singular || cut_.count(n) > 0; };
     for (std::size_t n = 0; n < keys_.size(); ++n) {
+      if (cut_.count(n)) {  // one arc from the analysed side, or none
+        if (at[n].size() > 1) {
+          fail("inconsistent subdivision: a phantom cut joins " + std::to_string(at[n].size()) + " arcs");
+          return false;
+        }
+        continue;
+      }
       const std::size_t want =
           on_domain_boundary(n) ? 1 : (keys_[n].singular ? (singular_[std::size_t(keys_[n].index)].isolated ? 0 : 4) : 2);
       if (at[n].size() != want) {
@@ -1025,6 +1056,8 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
+  std::set<std::size_t> cut_;             // nodes on the edges of excised boxes
+  std::vector<Parameter_box> excised_;
   bool failed_ = false;
   std::string failure_;
 };

@@ -328,6 +328,13 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
       ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
         return internal::prove_double_partner_point(eq, b, x);
       };
+      // phantom regions (no partner in the partner domain, proved) are not analysed
+      if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
+        const Parameter_box domain = o.partner_domain;
+        ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
+          return internal::no_genuine_partner(eq, b, domain);
+        };
+      }
     }
     if (!internal::topology_is_affordable(L, ow)) return L;
   }
@@ -465,6 +472,13 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
         return internal::prove_double_partner_point(eq, b, x);
       };
+      // phantom regions (no partner in the partner domain, proved) are not analysed
+      if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
+        const Parameter_box domain = o.partner_domain;
+        ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
+          return internal::no_genuine_partner(eq, b, domain);
+        };
+      }
     }
     if (!internal::topology_is_affordable(L, ow)) return L;
   }

@@ -36,6 +36,34 @@
 namespace bezoutian {
 namespace internal {
 
+/// A closed interval of doubles with outward rounding: each operation is computed in round-to-nearest and
+/// widened by one ulp on each side, which covers its rounding error (a cheap, rigorous enclosure).
+struct Double_interval {
+  double lo = 0, hi = 0;
+  static Double_interval of(const Rational& q) {
+    const auto p = CGAL::to_interval(q);
+    return {p.first, p.second};
+  }
+  static Double_interval hull(const Rational& a, const Rational& b) { return {of(a).lo, of(b).hi}; }
+  static Double_interval widen(double a, double b) {
+    if (std::isnan(a) || std::isnan(b)) return {-HUGE_VAL, HUGE_VAL};
+    return {std::nextafter(a, -HUGE_VAL), std::nextafter(b, HUGE_VAL)};
+  }
+  friend Double_interval operator+(const Double_interval& x, const Double_interval& y) {
+    return widen(x.lo + y.lo, x.hi + y.hi);
+  }
+  friend Double_interval operator-(const Double_interval& x, const Double_interval& y) {
+    return widen(x.lo - y.hi, x.hi - y.lo);
+  }
+  friend Double_interval operator*(const Double_interval& x, const Double_interval& y) {
+    const double a = x.lo * y.lo, b = x.lo * y.hi, c = x.hi * y.lo, d = x.hi * y.hi;
+    if (std::isnan(a) || std::isnan(b) || std::isnan(c) || std::isnan(d)) return {-HUGE_VAL, HUGE_VAL};
+    return widen(std::min(std::min(a, b), std::min(c, d)), std::max(std::max(a, b), std::max(c, d)));
+  }
+  bool contains_zero() const { return !(lo > 0) && !(hi < 0); }
+  double mid() const { return 0.5 * (lo + hi); }
+};
+
 /// The partner equations of a locus (see the header comment): which patch points P, Q a pair (x, y) defines.
 class Partner_equations {
  public:
@@ -129,6 +157,38 @@ class Partner_equations {
     }
   }
 
+  /// E (and dE/dz if J is given) over the real box z, in outward-rounded double interval arithmetic.
+  void evaluate(const std::array<Double_interval, 4>& z, std::array<Double_interval, 3>& E,
+                std::array<std::array<Double_interval, 4>, 3>* J = nullptr) const {
+    using D = Double_interval;
+    std::array<D, 2> P, Q;
+    if (self_) {
+      P = {z[0], z[1] + z[3]};
+      Q = {z[0] + z[2], z[1]};
+    } else {
+      P = {z[0], z[2]};
+      Q = {z[3], z[1]};
+    }
+    std::array<std::array<D, 3>, 4> a, b;
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < (J ? 3 : 1); ++d) {
+        a[k][d] = horner_interval(d == 0 ? A_[k].if_ : (d == 1 ? A_[k].ifu : A_[k].ifv), P);
+        b[k][d] = horner_interval(d == 0 ? B_[k].if_ : (d == 1 ? B_[k].ifu : B_[k].ifv), Q);
+      }
+    for (int c = 1; c <= 3; ++c) {
+      E[c - 1] = a[c][0] * b[0][0] - b[c][0] * a[0][0];
+      if (!J) continue;
+      for (int i = 0; i < 4; ++i) {
+        D d{0, 0};
+        for (int e = 0; e < 2; ++e) {
+          if (dP(e, i)) d = d + (a[c][1 + e] * b[0][0] - b[c][0] * a[0][1 + e]);
+          if (dQ(e, i)) d = d + (a[c][0] * b[0][1 + e] - b[c][1 + e] * a[0][0]);
+        }
+        (*J)[c - 1][i] = d;
+      }
+    }
+  }
+
   static Cx add(const Cx& x, const Cx& y) { return Cx{x.re + y.re, x.im + y.im}; }
   static Cx sub(const Cx& x, const Cx& y) { return Cx{x.re - y.re, x.im - y.im}; }
   static Cx mul(const Cx& x, const Cx& y) { return Cx{x.re * y.re - x.im * y.im, x.re * y.im + x.im * y.re}; }
@@ -138,6 +198,7 @@ class Partner_equations {
   struct Form {
     std::vector<std::vector<Rational>> f, fu, fv;
     std::vector<std::vector<double>> df, dfu, dfv;
+    std::vector<std::vector<Double_interval>> if_, ifu, ifv;
   };
   void init(const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>& psi) {
     const auto pa = phi.power_form(), pb = psi.power_form();
@@ -172,6 +233,15 @@ class Partner_equations {
     F.df = to_d(F.f);
     F.dfu = to_d(F.fu);
     F.dfv = to_d(F.fv);
+    auto to_i = [](const std::vector<std::vector<Rational>>& x) {
+      std::vector<std::vector<Double_interval>> r(x.size());
+      for (std::size_t j = 0; j < x.size(); ++j)
+        for (const auto& c : x[j]) r[j].push_back(Double_interval::of(c));
+      return r;
+    };
+    F.if_ = to_i(F.f);
+    F.ifu = to_i(F.fu);
+    F.ifv = to_i(F.fv);
     return F;
   }
   template <class T>
@@ -179,6 +249,16 @@ class Partner_equations {
     T r = 0;
     for (std::size_t j = c.size(); j-- > 0;) {
       T s = 0;
+      for (std::size_t i = c[j].size(); i-- > 0;) s = s * x[0] + c[j][i];
+      r = r * x[1] + s;
+    }
+    return r;
+  }
+  static Double_interval horner_interval(const std::vector<std::vector<Double_interval>>& c,
+                                         const std::array<Double_interval, 2>& x) {
+    Double_interval r{0, 0};
+    for (std::size_t j = c.size(); j-- > 0;) {
+      Double_interval s{0, 0};
       for (std::size_t i = c[j].size(); i-- > 0;) s = s * x[0] + c[j][i];
       r = r * x[1] + s;
     }
@@ -532,6 +612,73 @@ inline bool prove_double_partner_point(const Partner_equations& eq, const Parame
     return true;
   }
   return false;
+}
+
+/// \brief Proves that no point x of `box` has a partner in the partner domain (the points P, Q of the header
+/// comment both in `domain`; for self-intersection y != (0, 0)): then D = 0 has no genuine point in `box`.
+/// The partner range is split into at most `max_pieces` boxes; on each, some equation E_c must exclude 0 over
+/// box x piece, or (self-intersection, a piece near y = 0) the interval Jacobian dE/dy must have full rank on the
+/// hull H of the piece and 0: E(x; y) = M y with M a mean value of dE/dy on the segment [0, y] inside H
+/// (E(x; 0) = 0), so y = 0 is the only zero there (the trivial partner). False means "not proved".
+inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box& box, const Parameter_box& domain,
+                               int max_pieces = 1024) {
+  using D = Double_interval;
+  const D x1 = D::hull(box.u0, box.u1), x2 = D::hull(box.v0, box.v1);
+  std::vector<std::array<D, 2>> stack;
+  if (eq.self_intersection())  // l: u + l in [d.u0, d.u1]; k: v + k in [d.v0, d.v1]
+    stack.push_back({D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)});
+  else  // (v, s) in the domain
+    stack.push_back({D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)});
+  int pieces = 0;
+  while (!stack.empty()) {
+    const std::array<D, 2> y = stack.back();
+    stack.pop_back();
+    if (++pieces > max_pieces) return false;
+    std::array<D, 3> E;
+    eq.evaluate({x1, x2, y[0], y[1]}, E);
+    if (!E[0].contains_zero() || !E[1].contains_zero() || !E[2].contains_zero()) continue;
+    {  // mean value form: E(c) + dE/dz (box) (z - c), c the centre (much tighter on small pieces)
+      std::array<std::array<D, 4>, 3> J;
+      eq.evaluate({x1, x2, y[0], y[1]}, E, &J);
+      const std::array<D, 4> z{x1, x2, y[0], y[1]};
+      std::array<D, 4> c, dz;
+      for (int i = 0; i < 4; ++i) {
+        const double m = z[i].mid();
+        c[i] = D{m, m};
+        dz[i] = z[i] - c[i];
+      }
+      std::array<D, 3> Ec;
+      eq.evaluate(c, Ec);
+      bool excluded = false;
+      for (int r = 0; r < 3 && !excluded; ++r) {
+        D v = Ec[r];
+        for (int i = 0; i < 4; ++i) v = v + J[r][i] * dz[i];
+        excluded = !v.contains_zero();
+      }
+      if (excluded) continue;
+    }
+    // near the trivial partner: the rank test on the hull of the piece and y = 0 (pieces touching it included)
+    const D h0{std::min(y[0].lo, 0.0), std::max(y[0].hi, 0.0)}, h1{std::min(y[1].lo, 0.0), std::max(y[1].hi, 0.0)};
+    if (eq.self_intersection() && (h0.hi - h0.lo) + (h1.hi - h1.lo) <= 3 * ((y[0].hi - y[0].lo) + (y[1].hi - y[1].lo))) {
+      std::array<std::array<D, 4>, 3> J;
+      eq.evaluate({x1, x2, h0, h1}, E, &J);
+      bool full_rank = false;
+      for (int r = 0; r < 3 && !full_rank; ++r)
+        for (int q = r + 1; q < 3 && !full_rank; ++q)
+          full_rank = !(J[r][2] * J[q][3] - J[r][3] * J[q][2]).contains_zero();
+      if (full_rank) continue;
+    }
+    // split the wider side
+    const int i = (y[0].hi - y[0].lo) >= (y[1].hi - y[1].lo) ? 0 : 1;
+    const double m = y[i].mid();
+    std::array<D, 2> lo = y, hi = y;
+    lo[i].hi = m;
+    hi[i].lo = m;
+    if (!(lo[i].lo < m && m < hi[i].hi)) return false;  // cannot split further
+    stack.push_back(lo);
+    stack.push_back(hi);
+  }
+  return true;
 }
 
 } // namespace internal
