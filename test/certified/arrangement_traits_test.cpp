@@ -469,3 +469,93 @@ TEST_CASE("arrangement traits: Boolean operations on discs bounded by rational a
   CHECK(CGAL::do_intersect(a, b));
   CHECK(!CGAL::do_intersect(small, disc(3, 0, 1)));
 }
+
+// ------------------------------------------------------------------ interval solvers and lazy exact parameters
+
+TEST_CASE("arrangement traits: interval solver boxes hold exactly the intersections of intersect_curves", "[arrangement]") {
+  // seeded random polynomial cubics and quintics; every pair the interval solver decides must give one box per
+  // exact intersection of the (independent) elimination engine, each exact point in exactly one box
+  std::mt19937 g(7);
+  int decided = 0, points = 0;
+  for (int degree : {3, 5}) {
+    std::vector<std::shared_ptr<const internal::Arr_bezier_supporting_curve>> cs;
+    for (int i = 0; i < 8; ++i) {
+      std::vector<Pt> p;
+      for (int j = 0; j <= degree; ++j) p.push_back(Pt{Rational(long(g() % 1000)), Rational(long(g() % 1000))});
+      cs.push_back(internal::make_supporting_curve(Curve(p)));
+    }
+    for (std::size_t i = 0; i < cs.size(); ++i)
+      for (std::size_t j = i + 1; j < cs.size(); ++j) {
+        internal::Arr_interval_solver solver{*cs[i], *cs[j], {}};
+        solver.run(cs[i]->inet, 0, 1, cs[j]->inet, 0, 1, 0);
+        if (solver.failed) continue;
+        ++decided;
+        const auto exact = intersect_curves(cs[i]->curve, cs[j]->curve);
+        INFO("degree " << degree << " pair " << i << " " << j);
+        REQUIRE(solver.found.size() == exact.points.size());
+        for (const auto& e : exact.points) {
+          int inside = 0;
+          for (const auto& b : solver.found)
+            if (e.s.compare(Rational(b[0])) >= 0 && e.s.compare(Rational(b[1])) <= 0 && e.t.compare(Rational(b[2])) >= 0 &&
+                e.t.compare(Rational(b[3])) <= 0)
+              ++inside;
+          CHECK(inside == 1);
+          ++points;
+        }
+      }
+  }
+  CHECK(decided > 40);  // of 56 pairs: transversal random crossings are decided without elimination
+  CHECK(points > 40);
+}
+
+TEST_CASE("arrangement traits: self-intersections by interval subdivision, simplicity test", "[arrangement]") {
+  // Symmetric cubic (0,0), (4,2), (-1,2), (3,0): y(t) = 6t(1-t), x(t) = 12t - 27t^2 + 18t^3, so C(s) = C(t), s < t,
+  // needs t = 1 - s and x(s) = 3/2: 12s^3 - 18s^2 + 8s - 1 = (2s - 1)(6s^2 - 6s + 1), s = (3 - sqrt 3)/6.
+  const Curve loop = poly({{0, 0}, {4, 2}, {-1, 2}, {3, 0}});
+  const auto s = internal::make_supporting_curve(loop);
+  CHECK_FALSE(s->simple);
+  internal::Arr_self_interval_solver solver{*s, {}};
+  solver.run(s->inet, 0, 1, s->inet, 0, 1, 0);
+  REQUIRE_FALSE(solver.failed);
+  REQUIRE(solver.found.size() == 1);
+  const double s0 = (3 - std::sqrt(3.0)) / 6, t0 = (3 + std::sqrt(3.0)) / 6;
+  CHECK(solver.found[0][0] <= s0 + 1e-12);
+  CHECK(solver.found[0][1] >= s0 - 1e-12);
+  CHECK(solver.found[0][2] <= t0 + 1e-12);
+  CHECK(solver.found[0][3] >= t0 - 1e-12);
+  CHECK(solver.found[0][1] - solver.found[0][0] < 1e-9);
+  // x-extrema at t = 1/3, 2/3 (x' = 12 - 54t + 54t^2): 5 vertices, 5 edges, the loop's face and the unbounded one
+  check({loop}, 5, 5, 2);
+  // random cubics: proved simple => self_intersections finds nothing; otherwise the solver agrees with it
+  std::mt19937 g(11);
+  int simple = 0, compared = 0;
+  for (int i = 0; i < 30; ++i) {
+    std::vector<Pt> p;
+    for (int j = 0; j <= 3; ++j) p.push_back(Pt{Rational(long(g() % 1000)), Rational(long(g() % 1000))});
+    const Curve c(p);
+    const auto sc = internal::make_supporting_curve(c);
+    const auto exact = self_intersections(c);
+    if (sc->simple) {
+      ++simple;
+      CHECK(exact.points.empty());
+      continue;
+    }
+    internal::Arr_self_interval_solver ss{*sc, {}};
+    ss.run(sc->inet, 0, 1, sc->inet, 0, 1, 0);
+    if (ss.failed) continue;
+    ++compared;
+    CHECK(ss.found.size() == exact.points.size());
+  }
+  CHECK(simple > 0);
+  CHECK(compared > 0);
+}
+
+TEST_CASE("arrangement traits: several crossings at one point (lazy parameters made exact)", "[arrangement]") {
+  // segments through (1,1): the pairwise crossings are found as separate interval boxes and identified exactly
+  const Curve a = poly({{0, 0}, {2, 2}}), b = poly({{0, 2}, {2, 0}}), c = poly({{0, Rational(1, 2)}, {2, Rational(3, 2)}});
+  check({a, b, c}, 7, 6, 1);
+  // and a cubic through (1,1) at t = 1/2, crossing the segments only there (slope -4/3 at the point; control
+  // points (0,5/3), (1/2,5/3), (3/2,1/3), (2,1/3): y decreases, the segments' y - 1 changes sign only at x = 1)
+  const Curve d = poly({{0, Rational(5, 3)}, {Rational(1, 2), Rational(5, 3)}, {Rational(3, 2), Rational(1, 3)}, {2, Rational(1, 3)}});
+  check({a, c, d}, 7, 6, 1);
+}
