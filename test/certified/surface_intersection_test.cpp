@@ -216,3 +216,79 @@ TEST_CASE("an irrational node of the intersection curve is certified by its two 
     }
   CHECK(checked > 20);
 }
+
+// The handle enters the body (data README: "handle/body ... intersect in closed curves; check topology, symmetry
+// about y = 0, and that points lie on both surfaces"). The upper end of the handle (patches 12, 13, mirror images
+// about y = 0) cuts body patches 5 and 6 (mirror images): one genuine arc in each pair, from the seam y = 0 back
+// to it, the two arcs closing up into one closed curve.
+TEST_CASE("teapot: the handle cuts the body along a closed curve, symmetric about y = 0", "[surface][teapot]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  std::vector<std::vector<std::array<double, 3>>> curves;
+  std::vector<std::vector<std::array<double, 3>>> contact_points;
+  for (auto pr : {std::pair<int, int>{12, 5}, {13, 6}}) {
+    const Patch& phi = doc.patches[pr.first];
+    const Patch& psi = doc.patches[pr.second];
+    Surface_locus L = intersection_locus(phi, psi);
+    INFO("handle " << pr.first << " body " << pr.second << ": " << L.note);
+    REQUIRE(L.topology_computed);
+    CHECK(L.topology_method == "subdivision");
+    std::vector<std::array<double, 3>> pts;
+    int genuine_arcs = 0;
+    for (const auto& arc : L.arcs) {
+      std::size_t g = 0;
+      for (const auto& q : arc.points) g += q.genuine;
+      if (g == 0) continue;
+      ++genuine_arcs;
+      CHECK(g == arc.points.size());  // the whole arc is genuine
+      for (const auto& q : arc.points) {
+        // on both patches, independently evaluated, parameters in the unit square
+        const auto a = phi.evaluate(q.first[0], q.first[1]), b = psi.evaluate(q.second[0], q.second[1]);
+        CHECK(std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2])) < 1e-7);
+        for (double c : {q.first[0], q.first[1], q.second[0], q.second[1]}) {
+          CHECK(c >= -1e-9);
+          CHECK(c <= 1 + 1e-9);
+        }
+        pts.push_back(a);
+      }
+    }
+    CHECK(genuine_arcs == 1);
+    REQUIRE(pts.size() > 50);
+    CHECK(std::abs(pts.front()[1]) < 1e-9);  // both ends on the seam plane y = 0
+    CHECK(std::abs(pts.back()[1]) < 1e-9);
+    std::vector<std::array<double, 3>> cps;
+    for (const auto& c : L.contacts) {
+      CHECK_FALSE(c.shared_curve);  // the handle is not glued to the body: isolated boundary contacts
+      cps.push_back(c.point);
+    }
+    curves.push_back(pts);
+    contact_points.push_back(cps);
+  }
+  auto dist = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2]));
+  };
+  // the two arcs share their end points (a closed curve), and these are the exact boundary contacts of the pairs
+  for (int k = 0; k < 2; ++k) {
+    const auto& c = curves[k];
+    for (const auto& end : {c.front(), c.back()}) {
+      CHECK(std::min(dist(end, curves[1 - k].front()), dist(end, curves[1 - k].back())) < 1e-9);
+      double best = 1e300;
+      for (const auto& p : contact_points[k]) best = std::min(best, dist(end, p));
+      CHECK(best < 1e-9);
+    }
+  }
+  // mirror symmetry: every point of one arc, reflected in y = 0, lies on the other arc's polyline
+  auto to_polyline = [&](const std::array<double, 3>& p, const std::vector<std::array<double, 3>>& poly) {
+    double best = 1e300;
+    for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
+      std::array<double, 3> d{poly[i + 1][0] - poly[i][0], poly[i + 1][1] - poly[i][1], poly[i + 1][2] - poly[i][2]};
+      const double len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      double t = len2 > 0 ? ((p[0] - poly[i][0]) * d[0] + (p[1] - poly[i][1]) * d[1] + (p[2] - poly[i][2]) * d[2]) / len2 : 0;
+      t = std::max(0.0, std::min(1.0, t));
+      best = std::min(best, dist(p, {poly[i][0] + t * d[0], poly[i][1] + t * d[1], poly[i][2] + t * d[2]}));
+    }
+    return best;
+  };
+  for (int k = 0; k < 2; ++k)
+    for (const auto& p : curves[k]) CHECK(to_polyline({p[0], -p[1], p[2]}, curves[1 - k]) < 2e-3);
+}

@@ -31,6 +31,9 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 namespace bezoutian {
@@ -47,7 +50,20 @@ struct Double_interval {
   static Double_interval hull(const Rational& a, const Rational& b) { return {of(a).lo, of(b).hi}; }
   static Double_interval widen(double a, double b) {
     if (std::isnan(a) || std::isnan(b)) return {-HUGE_VAL, HUGE_VAL};
-    return {std::nextafter(a, -HUGE_VAL), std::nextafter(b, HUGE_VAL)};
+    return {next(a, false), next(b, true)};
+  }
+  // The neighbouring double towards +infinity (up) or -infinity (std::nextafter without the library call).
+  static double next(double x, bool up) {
+    if (std::isinf(x)) return x;
+    if (x == 0) return up ? std::numeric_limits<double>::denorm_min() : -std::numeric_limits<double>::denorm_min();
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    if ((x > 0) == up)
+      ++b;
+    else
+      --b;
+    std::memcpy(&x, &b, sizeof b);
+    return x;
   }
   friend Double_interval operator+(const Double_interval& x, const Double_interval& y) {
     return widen(x.lo + y.lo, x.hi + y.hi);
