@@ -51,6 +51,8 @@ class Arr_bezier_point_2 {
     rep_->c[1] = Algebraic_real(y);
     rep_->known[0] = rep_->known[1] = true;
   }
+  /// The rational point with the exact values of the doubles x and y (e.g. grid landmarks).
+  Arr_bezier_point_2(double x, double y) : Arr_bezier_point_2(Rational(x), Rational(y)) {}
   /// The point with the given exact coordinates.
   Arr_bezier_point_2(const Algebraic_real& x, const Algebraic_real& y) : rep_(std::make_shared<Rep>()) {
     rep_->c[0] = x;
@@ -911,11 +913,36 @@ class Arr_rational_bezier_traits_2 {
     }
   };
 
-  /// Approximation of a point coordinate (i = 0: x, 1: y) as a double.
+  /// Approximation of a point coordinate (i = 0: x, 1: y) as a double (ArrangementApproximateTraits_2).
+  using Approximate_number_type = double;
   class Approximate_2 {
    public:
-    double operator()(const Point_2& p, int i) const { return i == 0 ? p.approximate_x() : p.approximate_y(); }
+    double operator()(const Point_2& p, int i) const {
+      double lo, hi;
+      if (p.enclose_double(i, lo, hi) && hi - lo <= 1e-9 * (std::abs(lo) + 1)) return 0.5 * (lo + hi);
+      return i == 0 ? p.approximate_x() : p.approximate_y();
+    }
   };
+
+  /// The segment from p to q (ArrangementConstructXMonotoneCurveTraits_2, used by landmark point location): a
+  /// degree-1 Bezier curve, so both points must be rational (throws Invalid_input otherwise; with
+  /// CGAL::Arr_grid_landmarks_generator or Arr_halton_landmarks_generator the landmarks are rational).
+  class Construct_x_monotone_curve_2 {
+   public:
+    X_monotone_curve_2 operator()(const Point_2& p, const Point_2& q) const {
+      if (cmp_xy(p, q) == 0) throw Invalid_input("Arr_rational_bezier_traits_2: a segment needs two different points");
+      std::vector<Curve_2::Point> ends;
+      for (const Point_2* r : {&p, &q}) {
+        if (!r->x().is_rational() || !r->y().is_rational())
+          throw Invalid_input("Arr_rational_bezier_traits_2: Construct_x_monotone_curve_2 needs rational points "
+                              "(landmark point location: use rational landmarks, e.g. Arr_grid_landmarks_generator)");
+        ends.push_back({r->x().rational_value(), r->y().rational_value()});
+      }
+      const auto s = internal::make_supporting_curve(Curve_2(ends));
+      return make_arc(s, Parameter(0), Parameter(1), p, q);
+    }
+  };
+  Construct_x_monotone_curve_2 construct_x_monotone_curve_2_object() const { return Construct_x_monotone_curve_2(); }
 
   Compare_x_2 compare_x_2_object() const { return Compare_x_2(); }
   Compare_xy_2 compare_xy_2_object() const { return Compare_xy_2(); }

@@ -5,6 +5,8 @@
 
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Arr_naive_point_location.h>
+#include <CGAL/Arr_landmarks_point_location.h>
+#include <CGAL/Arr_point_location/Arr_lm_grid_generator.h>
 
 #include <CGAL/Cartesian.h>
 #include <CGAL/CORE_algebraic_number_traits.h>
@@ -558,4 +560,52 @@ TEST_CASE("arrangement traits: several crossings at one point (lazy parameters m
   // points (0,5/3), (1/2,5/3), (3/2,1/3), (2,1/3): y decreases, the segments' y - 1 changes sign only at x = 1)
   const Curve d = poly({{0, Rational(5, 3)}, {Rational(1, 2), Rational(5, 3)}, {Rational(3, 2), Rational(1, 3)}, {2, Rational(1, 3)}});
   check({a, c, d}, 7, 6, 1);
+}
+
+TEST_CASE("arrangement traits: landmark point location agrees with naive point location", "[arrangement]") {
+  // two crossing circles and four random cubics; landmarks on a grid (rational points); every query on a grid of
+  // rational points (including points on the circles' axis and near vertices) gets the same face / edge / vertex
+  // from CGAL's landmark point location (walks along our segments) as from the naive one
+  std::vector<Curve> cs = circle(0, 0, 1), b = circle(1, 0, 1);
+  cs.insert(cs.end(), b.begin(), b.end());
+  std::mt19937 g(3);
+  for (int i = 0; i < 4; ++i) {
+    std::vector<Pt> p;
+    for (int j = 0; j <= 3; ++j) p.push_back(Pt{Rational(int(g() % 400) - 150, 100), Rational(int(g() % 300) - 150, 100)});
+    cs.push_back(Curve(p));
+  }
+  Traits tr;
+  Arr arr(&tr);
+  CGAL::insert(arr, cs.begin(), cs.end());
+  REQUIRE(arr.is_valid());
+  CGAL::Arr_naive_point_location<Arr> naive(arr);
+  using Grid = CGAL::Arr_grid_landmarks_generator<Arr>;
+  CGAL::Arr_landmarks_point_location<Arr, Grid> landmarks(arr);
+  int faces = 0, others = 0;
+  for (int i = -8; i <= 12; ++i)
+    for (int j = -8; j <= 8; ++j) {
+      const Traits::Point_2 q(Rational(i, 4), Rational(j, 5));
+      const auto a = naive.locate(q), c = landmarks.locate(q);
+      INFO("query " << i << "/4, " << j << "/5");
+      if (const Arr::Face_const_handle* f = boost::get<Arr::Face_const_handle>(&a)) {
+        const Arr::Face_const_handle* h = boost::get<Arr::Face_const_handle>(&c);
+        REQUIRE(h != nullptr);
+        CHECK(*h == *f);
+        ++faces;
+      } else if (const Arr::Halfedge_const_handle* e = boost::get<Arr::Halfedge_const_handle>(&a)) {
+        const Arr::Halfedge_const_handle* h = boost::get<Arr::Halfedge_const_handle>(&c);
+        REQUIRE(h != nullptr);
+        CHECK((*h == *e || *h == (*e)->twin()));
+        ++others;
+      } else {
+        const Arr::Vertex_const_handle* v = boost::get<Arr::Vertex_const_handle>(&a);
+        const Arr::Vertex_const_handle* h = boost::get<Arr::Vertex_const_handle>(&c);
+        REQUIRE(v != nullptr);
+        REQUIRE(h != nullptr);
+        CHECK(*h == *v);
+        ++others;
+      }
+    }
+  CHECK(faces > 100);
+  CHECK(others > 0);  // (0, 1), (1, 1), (1, 0), ... lie on the circles
 }
