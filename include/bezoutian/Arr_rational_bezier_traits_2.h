@@ -321,6 +321,12 @@ class Arr_rational_bezier_traits_2 {
         pair->a = a;
         pair->b = b;
         Pair_entry e;
+        for (const auto& c : solver.contacts) {  // common end points: rational parameters
+          const Parameter s(c[0]), t(c[1]);
+          Point_2 p(a, s);
+          p.add_origin(b, t);
+          e.points.push_back({p, s, t, false});
+        }
         for (const auto& f : solver.found) {
           auto l = std::make_shared<internal::Arr_lazy_point>();
           l->pair = pair;

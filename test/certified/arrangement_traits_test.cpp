@@ -508,6 +508,30 @@ TEST_CASE("arrangement traits: interval solver boxes hold exactly the intersecti
   }
   CHECK(decided > 40);  // of 56 pairs: transversal random crossings are decided without elimination
   CHECK(points > 40);
+  // chains: cubics sharing end points (corner, smooth joint, both ends shared); common end points are exact
+  // contacts, the other intersections boxes, together exactly the points of intersect_curves
+  const std::vector<std::pair<Curve, Curve>> chains{
+      {poly({{0, 0}, {1, 2}, {2, -1}, {3, 1}}), poly({{3, 1}, {4, 3}, {1, 2}, {0, 3}})},                // corner
+      {poly({{0, 0}, {1, 1}, {2, 1}, {3, 0}}), poly({{3, 0}, {4, -1}, {5, 2}, {1, Rational(1, 3)}})},    // G1 joint
+      {poly({{0, 0}, {1, 2}, {2, 2}, {3, 0}}), poly({{3, 0}, {2, -2}, {1, -2}, {0, 0}})},                // closed
+      {poly({{0, 0}, {4, 1}, {0, 2}}), poly({{0, 0}, {-1, 3}, {3, 1}, {1, -1}})}};                       // start/start
+  int contacts = 0;
+  for (const auto& ch : chains) {
+    const auto a = internal::make_supporting_curve(ch.first), b = internal::make_supporting_curve(ch.second);
+    internal::Arr_interval_solver solver{*a, *b, {}};
+    solver.run(a->inet, 0, 1, b->inet, 0, 1, 0);
+    const auto exact = intersect_curves(ch.first, ch.second);
+    if (solver.failed) continue;
+    CHECK(solver.found.size() + solver.contacts.size() == exact.points.size());
+    for (const auto& c : solver.contacts) {
+      bool in_exact = false;
+      for (const auto& e : exact.points)
+        if (e.s == Algebraic_real(c[0]) && e.t == Algebraic_real(c[1])) in_exact = true;
+      CHECK(in_exact);
+      ++contacts;
+    }
+  }
+  CHECK(contacts >= 3);
 }
 
 TEST_CASE("arrangement traits: self-intersections by interval subdivision, simplicity test", "[arrangement]") {

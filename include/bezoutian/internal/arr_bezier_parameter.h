@@ -255,10 +255,17 @@ inline void arr_net_halves(const Arr_interval_net& q, Arr_interval_net& left, Ar
 /// enlarged box, exactly one zero (Krawczyk), contracted to a tiny box. Returns false (caller: exact path) when
 /// this does not settle everything: tangencies, overlaps, intersections at or near parameter 0 or 1, boxes of
 /// two cells that meet without a common proof, or a work budget exceeded.
+///
+/// Common end points C_A(e_a) = C_B(e_b), e_a, e_b in {0, 1} (exact comparison of the end control points) are
+/// `contacts`, exact intersections with rational parameters; a cell having one as a corner is settled when a
+/// direction v separates the two pieces strictly except at that point (v . (Q - P) < 0 for the other control
+/// points Q of one piece, > 0 for the other's: every other point of a piece is a positive combination of its
+/// control points), so that it holds no other intersection; otherwise it is halved.
 struct Arr_interval_solver {
   const Arr_bezier_supporting_curve& A;
   const Arr_bezier_supporting_curve& B;
   std::vector<std::array<double, 4>> found;  // s_lo, s_hi, t_lo, t_hi
+  std::vector<std::array<int, 2>> contacts;  // (e_a, e_b)
   int budget = 4000;
   bool failed = false;
 
@@ -266,6 +273,12 @@ struct Arr_interval_solver {
   void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
     typename Arr_interval::Protector guard;
     if (failed) return;
+    if (depth == 0) {
+      const std::size_t n = A.curve.number_of_control_points() - 1, m = B.curve.number_of_control_points() - 1;
+      for (int ea = 0; ea < 2; ++ea)
+        for (int eb = 0; eb < 2; ++eb)
+          if (A.curve.control_point(ea * n) == B.curve.control_point(eb * m)) contacts.push_back({ea, eb});
+    }
     if (--budget < 0) {
       failed = true;
       return;
@@ -276,7 +289,15 @@ struct Arr_interval_solver {
       return;
     }
     if (ba[1] < bb[0] || bb[1] < ba[0] || ba[3] < bb[2] || bb[3] < ba[2]) return;
-    if (depth >= 2) {
+    int corners = 0, ia = 0, ib = 0;
+    for (const auto& c : contacts)
+      if ((c[0] == s0 || c[0] == s1) && (c[1] == t0 || c[1] == t1)) {
+        ++corners;
+        ia = c[0] == s0 ? 0 : int(na.size()) - 1;
+        ib = c[1] == t0 ? 0 : int(nb.size()) - 1;
+      }
+    if (corners == 1 && depth >= 1 && separated(na, ia, nb, ib)) return;
+    if (corners == 0 && depth >= 2) {
       // enlarged cell: a zero on the cell boundary lies in its interior
       const double es = 0.0625 * (s1 - s0), et = 0.0625 * (t1 - t0);
       Arr_interval S(s0 - es, s1 + es), T(t0 - et, t1 + et);
@@ -297,6 +318,38 @@ struct Arr_interval_solver {
     run(al, s0, sm, br, tm, t1, depth + 1);
     run(ar, sm, s1, bl, t0, tm, depth + 1);
     run(ar, sm, s1, br, tm, t1, depth + 1);
+  }
+
+  /// The pieces na and nb meet only at their common end control points na[ia] = nb[ib] = P (see above).
+  static bool separated(const Arr_interval_net& na, int ia, const Arr_interval_net& nb, int ib) {
+    typedef Arr_interval I;
+    const I px = na[ia][1] / na[ia][0], py = na[ia][2] / na[ia][0];  // encloses P (exact end point)
+    const double cx = CGAL::to_double(px), cy = CGAL::to_double(py);
+    auto mean_direction = [&](const Arr_interval_net& q, int skip, double& ux, double& uy) {
+      ux = uy = 0;
+      for (int i = 0; i < int(q.size()); ++i)
+        if (i != skip) {
+          ux += CGAL::to_double(q[i][1] / q[i][0]) - cx;
+          uy += CGAL::to_double(q[i][2] / q[i][0]) - cy;
+        }
+      const double l = std::sqrt(ux * ux + uy * uy);
+      if (!(l > 0) || !std::isfinite(l)) return false;
+      ux /= l;
+      uy /= l;
+      return true;
+    };
+    double ax, ay, bx, by;
+    if (!mean_direction(na, ia, ax, ay) || !mean_direction(nb, ib, bx, by)) return false;
+    const I vx(bx - ax), vy(by - ay);
+    auto side = [&](const Arr_interval_net& q, int skip, int sign) {
+      for (int i = 0; i < int(q.size()); ++i) {
+        if (i == skip) continue;
+        const I d = vx * (q[i][1] / q[i][0] - px) + vy * (q[i][2] / q[i][0] - py);
+        if (sign < 0 ? !(d.sup() < 0) : !(d.inf() > 0)) return false;
+      }
+      return true;
+    };
+    return side(na, ia, -1) && side(nb, ib, 1);
   }
 
   void add(const Arr_interval& S, const Arr_interval& T) {
