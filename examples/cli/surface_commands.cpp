@@ -96,11 +96,19 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   for (const auto& v : T.vertices) {
     json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
                {"branches", v.branches}};
-    if (v.kind == bezoutian::Curve_topology_vertex::singular) sing.push_back(jv);
+    if (v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated) {
+      jv["isolated"] = v.kind == bezoutian::Curve_topology_vertex::isolated;
+      sing.push_back(jv);
+    }
     if (v.on_boundary) bnd.push_back(jv);
   }
   j["singular_points"] = sing;
   j["boundary_points"] = bnd;
+  // regions proved free of genuine points (no partner in the partner domain): D = 0 is not followed there
+  json excluded = json::array();
+  for (const auto& b : T.excluded_regions)
+    excluded.push_back({CGAL::to_double(b.u0), CGAL::to_double(b.u1), CGAL::to_double(b.v0), CGAL::to_double(b.v1)});
+  j["excluded_regions"] = excluded;
   if (!L.self_intersection) {
     json contacts = json::array();
     for (const auto& c : L.contacts)
@@ -132,7 +140,11 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
     << "' fill='none' stroke='black'/>\n";
   s << "<text x='" << pad << "' y='" << pad - 12 << "' font-size='11' font-family='sans-serif'>"
     << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
-    << "," << u1 << "]x[" << v0 << "," << v1 << "]; dashed grey: phantom</text>\n";
+    << "," << u1 << "]x[" << v0 << "," << v1 << "]; dashed grey: phantom; grey boxes: proved free of genuine points</text>\n";
+  for (const auto& b : L.topology.excluded_regions)  // proved free of genuine points: hatched grey
+    s << "<rect x='" << X(CGAL::to_double(b.u0)) << "' y='" << Y(CGAL::to_double(b.v1)) << "' width='"
+      << X(CGAL::to_double(b.u1)) - X(CGAL::to_double(b.u0)) << "' height='"
+      << Y(CGAL::to_double(b.v0)) - Y(CGAL::to_double(b.v1)) << "' fill='#eeeeee' stroke='#cccccc'/>\n";
   const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf"};
   for (std::size_t ci = 0; ci < L.topology.components.size(); ++ci) {
     for (std::size_t ei : L.topology.components[ci].edges) {

@@ -153,8 +153,11 @@ class Subdivision_topology {
         for (int i = 0; i <= D[j].degree(); ++i) bits = std::max(bits, long(D[j][i].bit_size()));
       }
     bits_ = bits;
-    // the power -> Bernstein conversion and the splits lose about a + b + log2(depth) bits
-    prec_ = mpfr_prec_t(96 + 2 * (a_ + b_));
+    // the power -> Bernstein conversion loses about a + b bits
+    root_prec_ = mpfr_prec_t(96 + 2 * (a_ + b_));
+    // the splits are convex combinations (interval widths do not grow), so after the conversion the grids need
+    // only enough bits to separate the values met near the curve: 144 bits, much cheaper than root_prec_
+    prec_ = std::min<mpfr_prec_t>(root_prec_, 144);
     // scaled double copy of D for sample points: coefficient * 2^-bits
     scaled_.assign(std::size_t(a_ + 1) * (b_ + 1), 0.0L);
     for (int j = 0; j <= D.degree(); ++j)
@@ -258,7 +261,7 @@ class Subdivision_topology {
   // Bernstein coefficients of D on the root box: shift and scale the power form (interval Taylor shifts), then
   // b_kl = sum_{i<=k, j<=l} C(k,i) C(l,j) / (C(a,i) C(b,j)) e_ij.
   void bernstein_on_box(Interval_grid& g) const {
-    Interval_grid e(a_, b_, prec_);
+    Interval_grid e(a_, b_, root_prec_);
     for (int i = 0; i <= a_; ++i)
       for (int j = 0; j <= b_; ++j) {
         const bool has = j <= D_.degree() && !CGAL::is_zero(D_[j]) && i <= D_[j].degree();
@@ -268,9 +271,9 @@ class Subdivision_topology {
           mpfi_set_ui(e.at(i, j), 0);
       }
     mpfi_t c, w, t;
-    mpfi_init2(c, prec_);
-    mpfi_init2(w, prec_);
-    mpfi_init2(t, prec_);
+    mpfi_init2(c, root_prec_);
+    mpfi_init2(w, root_prec_);
+    mpfi_init2(t, root_prec_);
     // u -> u0 + (u1 - u0) x for every column j
     for (int pass = 0; pass < 2; ++pass) {
       const bool along_u = pass == 0;
@@ -309,7 +312,7 @@ class Subdivision_topology {
       for (int k = 0; k <= n; ++k)
         for (int i = 0; i <= k; ++i) q[std::size_t(k) * (n + 1) + i] = Rational(binom(k, i)) / Rational(binom(n, i));
       std::vector<__mpfi_struct> out(std::size_t(n + 1));
-      for (auto& x : out) mpfi_init2(&x, prec_);
+      for (auto& x : out) mpfi_init2(&x, root_prec_);
       for (int l = 0; l <= m; ++l) {
         for (int k = 0; k <= n; ++k) {
           mpfi_set_ui(&out[k], 0);
@@ -1048,7 +1051,7 @@ class Subdivision_topology {
   Subdivision_topology_options o_;
   int a_ = 0, b_ = 0;
   long bits_ = 0;
-  mpfr_prec_t prec_ = 256;
+  mpfr_prec_t prec_ = 256, root_prec_ = 256;
   std::vector<long double> scaled_;
   std::map<std::pair<bool, Rational>, Line> lines_;
   std::map<Node_key, std::size_t> nodes_;
