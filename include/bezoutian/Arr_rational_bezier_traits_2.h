@@ -109,7 +109,7 @@ class Arr_bezier_point_2 {
       } else {
         const Origin& o = r.origins.front();
         if (!o.second.is_rational() && CGAL::to_double(o.second.upper() - o.second.lower()) > 1e-12)
-          o.second.refine_to_width(Rational(std::ldexp(1.0, -42)));  // parameters lie in [0, 1]
+          o.second.refine_to_width(internal::arr_parameter_width());  // parameters lie in [0, 1]
         if (!internal::arr_enclose_quotient_double(o.first->num[k], o.first->den[k], o.second.lower(), o.second.upper(),
                                                    r.dlo[k], r.dhi[k]))
           return false;
@@ -167,8 +167,12 @@ class Arr_bezier_point_2 {
   }
 
  private:
+  static const Algebraic_real& zero() {  // shared: no allocation per point
+    static const Algebraic_real z(0);
+    return z;
+  }
   struct Rep {
-    Algebraic_real c[2];
+    Algebraic_real c[2] = {zero(), zero()};
     bool known[2] = {false, false};
     double dlo[2], dhi[2];  // cached double enclosures
     bool dvalid[2] = {false, false};
@@ -543,7 +547,7 @@ class Arr_rational_bezier_traits_2 {
       }
     }
     if (!t->is_rational() && CGAL::to_double(t->upper() - t->lower()) > 1e-12)
-      t->refine_to_width(Rational(std::ldexp(1.0, -42)));
+      t->refine_to_width(internal::arr_parameter_width());
     typedef CGAL::Interval_nt<false> I;
     typename I::Protector guard;
     const I u = t->is_rational() ? I(CGAL::to_interval(t->rational_value()))
@@ -567,7 +571,7 @@ class Arr_rational_bezier_traits_2 {
   /// Sign of the derivative numerator speed[k] (X_k' W - X_k W') at the parameter t by interval evaluation
   /// (0: not decided).
   static int speed_sign(const Supporting& S, int k, const Parameter& t) {
-    if (!t.is_rational() && CGAL::to_double(t.upper() - t.lower()) > 1e-12) t.refine_to_width(Rational(std::ldexp(1.0, -42)));
+    if (!t.is_rational() && CGAL::to_double(t.upper() - t.lower()) > 1e-12) t.refine_to_width(internal::arr_parameter_width());
     typedef CGAL::Interval_nt<false> I;
     typename I::Protector guard;
     const I u = t.is_rational() ? I(CGAL::to_interval(t.rational_value()))

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -146,6 +147,12 @@ class Arr_parameter {
   int side_ = 0;
 };
 
+/// 2^-42: the parameter width to which enclosures are refined before double evaluation.
+inline const Rational& arr_parameter_width() {
+  static const Rational w(std::ldexp(1.0, -42));
+  return w;
+}
+
 inline void arr_refine(const Arr_parameter& t) {
   if (t.is_rational()) return;
   t.refine_to_width((t.upper() - t.lower()) / Rational(64));
@@ -234,9 +241,10 @@ inline bool arr_net_box(const Arr_interval_net& net, double b[4]) {
   return std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
 }
 
-/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves).
-inline void arr_net_halves(const Arr_interval_net& q, Arr_interval_net& left, Arr_interval_net& right) {
-  Arr_interval_net tri = q;
+/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves); `tri` is scratch space.
+inline void arr_net_halves(const Arr_interval_net& q, Arr_interval_net& left, Arr_interval_net& right,
+                           Arr_interval_net& tri) {
+  tri = q;
   const std::size_t n = q.size();
   left.assign(1, tri[0]);
   right.assign(1, tri[n - 1]);
@@ -268,6 +276,7 @@ struct Arr_interval_solver {
   std::vector<std::array<int, 2>> contacts;  // (e_a, e_b)
   int budget = 4000;
   bool failed = false;
+  std::deque<std::array<Arr_interval_net, 5>> pool;  // (growing a deque keeps references)
 
   /// Call with the whole nets on [0,1] x [0,1] and depth 0.
   void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
@@ -310,9 +319,11 @@ struct Arr_interval_solver {
       failed = true;
       return;
     }
-    Arr_interval_net al, ar, bl, br;
-    arr_net_halves(na, al, ar);
-    arr_net_halves(nb, bl, br);
+    if (pool.size() <= std::size_t(depth)) pool.resize(depth + 1);  // one set of nets per depth: no allocation
+    auto& nets = pool[depth];
+    Arr_interval_net &al = nets[0], &ar = nets[1], &bl = nets[2], &br = nets[3];
+    arr_net_halves(na, al, ar, nets[4]);
+    arr_net_halves(nb, bl, br, nets[4]);
     const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
     run(al, s0, sm, bl, t0, tm, depth + 1);
     run(al, s0, sm, br, tm, t1, depth + 1);
@@ -439,6 +450,7 @@ struct Arr_self_interval_solver {
   std::vector<std::array<double, 4>> found;
   int budget = 4000;
   bool failed = false;
+  std::deque<std::array<Arr_interval_net, 5>> pool;  // (growing a deque keeps references)
 
   void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
     typedef Arr_interval I;
@@ -474,9 +486,11 @@ struct Arr_self_interval_solver {
       failed = true;
       return;
     }
-    Arr_interval_net al, ar, bl, br;
-    arr_net_halves(na, al, ar);
-    arr_net_halves(nb, bl, br);
+    if (pool.size() <= std::size_t(depth)) pool.resize(depth + 1);  // one set of nets per depth: no allocation
+    auto& nets = pool[depth];
+    Arr_interval_net &al = nets[0], &ar = nets[1], &bl = nets[2], &br = nets[3];
+    arr_net_halves(na, al, ar, nets[4]);
+    arr_net_halves(nb, bl, br, nets[4]);
     const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
     run(al, s0, sm, bl, t0, tm, depth + 1);
     run(al, s0, sm, br, tm, t1, depth + 1);
