@@ -130,8 +130,14 @@ class Arr_bezier_point_2 {
   }
 
   /// Double approximations (nearest doubles).
-  double approximate_x() const { return x().to_double(); }
-  double approximate_y() const { return y().to_double(); }
+  /// (From the double enclosure when it is already narrow, ~1e-9 relative; else from the exact coordinate.)
+  double approximate_x() const { return approximate(0); }
+  double approximate_y() const { return approximate(1); }
+  double approximate(int k) const {
+    double lo, hi;
+    if (enclose_double(k, lo, hi) && hi - lo <= 1e-9 * (std::abs(lo) + 1)) return 0.5 * (lo + hi);
+    return coordinate(k).to_double();
+  }
   const std::vector<Origin>& origins() const { return rep_->origins; }
   /// Records that the point lies on s at parameter t (the caller guarantees it).
   void add_origin(const std::shared_ptr<const Supporting>& s, const Parameter& t) const {
@@ -927,11 +933,7 @@ class Arr_rational_bezier_traits_2 {
   using Approximate_number_type = double;
   class Approximate_2 {
    public:
-    double operator()(const Point_2& p, int i) const {
-      double lo, hi;
-      if (p.enclose_double(i, lo, hi) && hi - lo <= 1e-9 * (std::abs(lo) + 1)) return 0.5 * (lo + hi);
-      return i == 0 ? p.approximate_x() : p.approximate_y();
-    }
+    double operator()(const Point_2& p, int i) const { return p.approximate(i); }
   };
 
   /// The segment from p to q (ArrangementConstructXMonotoneCurveTraits_2, used by landmark point location): a
