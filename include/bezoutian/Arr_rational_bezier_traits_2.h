@@ -325,6 +325,7 @@ class Arr_rational_bezier_traits_2 {
       if (a == b) {
         solver.failed = self_solver.failed;
         solver.found = self_solver.found;
+        if (self_solver.closed) solver.contacts.push_back({0, 1});
       }
       if (!solver.failed) {
         auto pair = std::make_shared<internal::Arr_exact_pair>();

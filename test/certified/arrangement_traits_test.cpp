@@ -552,6 +552,17 @@ TEST_CASE("arrangement traits: self-intersections by interval subdivision, simpl
   CHECK(solver.found[0][1] - solver.found[0][0] < 1e-9);
   // x-extrema at t = 1/3, 2/3 (x' = 12 - 54t + 54t^2): 5 vertices, 5 edges, the loop's face and the unbounded one
   check({loop}, 5, 5, 2);
+  // closed teardrop (0,0), (2,3), (-2,3), (0,0): x = 6t(1-t)(1-2t), y = 9t(1-t); C(s) = C(t), s < t, needs
+  // t = 1 - s and x(s) = 0: only (0, 1), the common end point. x-extrema at t = (3 -+ sqrt 3)/6: V/E/F 3/3/2.
+  const Curve drop = poly({{0, 0}, {2, 3}, {-2, 3}, {0, 0}});
+  const auto sd = internal::make_supporting_curve(drop);
+  internal::Arr_self_interval_solver ds{*sd, {}};
+  ds.run(sd->inet, 0, 1, sd->inet, 0, 1, 0);
+  CHECK(ds.closed);
+  CHECK_FALSE(ds.failed);
+  CHECK(ds.found.empty());
+  CHECK(self_intersections(drop).points.size() == 1);
+  check({drop}, 3, 3, 2);
   // random cubics: proved simple => self_intersections finds nothing; otherwise the solver agrees with it
   std::mt19937 g(11);
   int simple = 0, compared = 0;

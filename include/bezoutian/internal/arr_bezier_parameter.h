@@ -450,12 +450,19 @@ struct Arr_self_interval_solver {
   std::vector<std::array<double, 4>> found;
   int budget = 4000;
   bool failed = false;
+  /// C(0) = C(1) (exact): the self-intersection (0, 1), a contact; the corner cell is settled as in
+  /// Arr_interval_solver (a direction separating the first and the last piece except at the common point).
+  bool closed = false;
   std::deque<std::array<Arr_interval_net, 5>> pool;  // (growing a deque keeps references)
 
+  /// Call with the whole net twice on [0,1] x [0,1] and depth 0.
   void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
     typedef Arr_interval I;
     typename I::Protector guard;
+    if (depth == 0) closed = A.curve.control_point(0) == A.curve.control_point(A.curve.number_of_control_points() - 1);
     if (failed || t1 < s0) return;  // only s <= t
+    const bool corner = closed && s0 == 0 && t1 == 1;
+    if (corner && depth >= 1 && s1 <= t0 && Arr_interval_solver::separated(na, 0, nb, int(nb.size()) - 1)) return;
     if (--budget < 0 || A.fd[0].empty()) {
       failed = true;
       return;
@@ -474,7 +481,7 @@ struct Arr_self_interval_solver {
       arr_eval_bivariate(A.fd[k], S, T, v, d1, d2);
       if (v.inf() > 0 || v.sup() < 0) return;
     }
-    if (depth >= 2) {
+    if (depth >= 2 && !corner) {
       const double es = 0.0625 * (s1 - s0), et = 0.0625 * (t1 - t0);
       I Sx(s0 - es, s1 + es), Tx(t0 - et, t1 + et);
       if (arr_krawczyk_self(A, Sx, Tx, 16)) {
