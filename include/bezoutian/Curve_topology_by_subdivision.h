@@ -526,9 +526,12 @@ class Subdivision_topology {
   // A box proved free of genuine points: its edge crossings become phantom_cut vertices (the arcs of the
   // neighbouring boxes end there). False (the box is then split) if a crossing is at a corner or multiple.
   bool excise(const Box& B) {
+    // edges on the domain boundary have no neighbour: their crossings (even multiple ones) do not matter
     std::vector<Crossing> cr;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+    if ((B.u0 != box_.u0 && !edge_crossings(true, B.u0, B.v0, B.v1, true, cr)) ||
+        (B.u1 != box_.u1 && !edge_crossings(true, B.u1, B.v0, B.v1, true, cr)) ||
+        (B.v0 != box_.v0 && !edge_crossings(false, B.v0, B.u0, B.u1, true, cr)) ||
+        (B.v1 != box_.v1 && !edge_crossings(false, B.v1, B.u0, B.u1, true, cr)))
       return false;
     for (const Crossing& c : cr) cut_.insert(node(c.vertical, c.c, c.index));
     excised_.push_back(Parameter_box{B.u0, B.u1, B.v0, B.v1});

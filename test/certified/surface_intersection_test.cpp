@@ -217,78 +217,107 @@ TEST_CASE("an irrational node of the intersection curve is certified by its two 
   CHECK(checked > 20);
 }
 
-// The handle enters the body (data README: "handle/body ... intersect in closed curves; check topology, symmetry
-// about y = 0, and that points lie on both surfaces"). The upper end of the handle (patches 12, 13, mirror images
-// about y = 0) cuts body patches 5 and 6 (mirror images): one genuine arc in each pair, from the seam y = 0 back
-// to it, the two arcs closing up into one closed curve.
-TEST_CASE("teapot: the handle cuts the body along a closed curve, symmetric about y = 0", "[surface][teapot]") {
-  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
-  REQUIRE(doc.patches.size() == 32);
-  std::vector<std::vector<std::array<double, 3>>> curves;
-  std::vector<std::vector<std::array<double, 3>>> contact_points;
-  for (auto pr : {std::pair<int, int>{12, 5}, {13, 6}}) {
-    const Patch& phi = doc.patches[pr.first];
-    const Patch& psi = doc.patches[pr.second];
-    Surface_locus L = intersection_locus(phi, psi);
-    INFO("handle " << pr.first << " body " << pr.second << ": " << L.note);
-    REQUIRE(L.topology_computed);
-    CHECK(L.topology_method == "subdivision");
-    std::vector<std::array<double, 3>> pts;
-    int genuine_arcs = 0;
-    for (const auto& arc : L.arcs) {
-      std::size_t g = 0;
-      for (const auto& q : arc.points) g += q.genuine;
-      if (g == 0) continue;
-      ++genuine_arcs;
-      CHECK(g == arc.points.size());  // the whole arc is genuine
-      for (const auto& q : arc.points) {
-        // on both patches, independently evaluated, parameters in the unit square
-        const auto a = phi.evaluate(q.first[0], q.first[1]), b = psi.evaluate(q.second[0], q.second[1]);
-        CHECK(std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2])) < 1e-7);
+// The handle and the spout enter the body (data README: "handle/body and spout/body intersect in closed curves;
+// check topology, symmetry about y = 0, and that points lie on both surfaces"). Each end is cut by a pair of
+// mirror-image tube patches (12/13: handle top; 16/17: spout base) through mirror-image body patches. Every pair
+// must be certified; the genuine runs of traced points must lie on both patches, chain up into one closed curve
+// (run ends meet other run ends; ends on the seam y = 0 are the exact boundary contacts), and the curve must be
+// symmetric about y = 0.
+namespace {
+using Run = std::vector<std::array<double, 3>>;
+double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2]));
+}
+double to_polyline(const std::array<double, 3>& p, const Run& poly) {
+  double best = 1e300;
+  for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
+    const std::array<double, 3> d{poly[i + 1][0] - poly[i][0], poly[i + 1][1] - poly[i][1], poly[i + 1][2] - poly[i][2]};
+    const double len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    double t = len2 > 0 ? ((p[0] - poly[i][0]) * d[0] + (p[1] - poly[i][1]) * d[1] + (p[2] - poly[i][2]) * d[2]) / len2 : 0;
+    t = std::max(0.0, std::min(1.0, t));
+    best = std::min(best, distance3(p, {poly[i][0] + t * d[0], poly[i][1] + t * d[1], poly[i][2] + t * d[2]}));
+  }
+  return best;
+}
+// genuine runs (at least 2 points) of the certified intersection of two teapot patches, checked on both patches;
+// also the exact contact points
+void genuine_runs(const std::vector<Patch>& patches, int a, int b, std::vector<Run>& runs,
+                  std::vector<std::array<double, 3>>& contacts) {
+  const Patch& phi = patches[a];
+  const Patch& psi = patches[b];
+  Surface_locus L = intersection_locus(phi, psi);
+  INFO("patches " << a << " x " << b << ": " << L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(L.topology_method == "subdivision");
+  for (const auto& c : L.contacts) {
+    CHECK_FALSE(c.shared_curve);  // handle and spout are not glued to the body: isolated contacts
+    contacts.push_back(c.point);
+  }
+  for (const auto& arc : L.arcs)
+    for (std::size_t i = 0; i < arc.points.size();) {
+      if (!arc.points[i].genuine) {
+        ++i;
+        continue;
+      }
+      Run run;
+      for (; i < arc.points.size() && arc.points[i].genuine; ++i) {
+        const auto& q = arc.points[i];
+        const auto p1 = phi.evaluate(q.first[0], q.first[1]), p2 = psi.evaluate(q.second[0], q.second[1]);
+        CHECK(distance3(p1, p2) < 1e-7);  // on both patches, independently evaluated
         for (double c : {q.first[0], q.first[1], q.second[0], q.second[1]}) {
           CHECK(c >= -1e-9);
           CHECK(c <= 1 + 1e-9);
         }
-        pts.push_back(a);
+        run.push_back(p1);
+      }
+      if (run.size() >= 2) runs.push_back(run);
+    }
+}
+void check_closed_symmetric_curve(const std::vector<Patch>& patches, const std::vector<std::pair<int, int>>& side_a,
+                                  const std::vector<std::pair<int, int>>& side_b, std::size_t min_points) {
+  std::vector<Run> runs[2];
+  std::vector<std::array<double, 3>> contacts;
+  for (int k = 0; k < 2; ++k)
+    for (const auto& pr : k == 0 ? side_a : side_b) genuine_runs(patches, pr.first, pr.second, runs[k], contacts);
+  std::vector<Run> all(runs[0]);
+  all.insert(all.end(), runs[1].begin(), runs[1].end());
+  std::size_t points = 0;
+  double step = 0;  // the sampling step along the runs
+  for (const auto& r : all) {
+    points += r.size();
+    for (std::size_t i = 0; i + 1 < r.size(); ++i) step = std::max(step, distance3(r[i], r[i + 1]));
+  }
+  CHECK(points >= min_points);
+  CHECK(step < 0.05);
+  // closed: every run end meets exactly one end of another run; ends on y = 0 are exact boundary contacts
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (const auto& end : {all[i].front(), all[i].back()}) {
+      int meets = 0;
+      for (std::size_t j = 0; j < all.size(); ++j)
+        if (j != i)
+          for (const auto& other : {all[j].front(), all[j].back()}) meets += distance3(end, other) <= 2 * step;
+      CHECK(meets == 1);
+      if (std::abs(end[1]) < 1e-9) {
+        double best = 1e300;
+        for (const auto& c : contacts) best = std::min(best, distance3(end, c));
+        CHECK(best < 1e-9);
       }
     }
-    CHECK(genuine_arcs == 1);
-    REQUIRE(pts.size() > 50);
-    CHECK(std::abs(pts.front()[1]) < 1e-9);  // both ends on the seam plane y = 0
-    CHECK(std::abs(pts.back()[1]) < 1e-9);
-    std::vector<std::array<double, 3>> cps;
-    for (const auto& c : L.contacts) {
-      CHECK_FALSE(c.shared_curve);  // the handle is not glued to the body: isolated boundary contacts
-      cps.push_back(c.point);
-    }
-    curves.push_back(pts);
-    contact_points.push_back(cps);
-  }
-  auto dist = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2]));
-  };
-  // the two arcs share their end points (a closed curve), and these are the exact boundary contacts of the pairs
-  for (int k = 0; k < 2; ++k) {
-    const auto& c = curves[k];
-    for (const auto& end : {c.front(), c.back()}) {
-      CHECK(std::min(dist(end, curves[1 - k].front()), dist(end, curves[1 - k].back())) < 1e-9);
-      double best = 1e300;
-      for (const auto& p : contact_points[k]) best = std::min(best, dist(end, p));
-      CHECK(best < 1e-9);
-    }
-  }
-  // mirror symmetry: every point of one arc, reflected in y = 0, lies on the other arc's polyline
-  auto to_polyline = [&](const std::array<double, 3>& p, const std::vector<std::array<double, 3>>& poly) {
-    double best = 1e300;
-    for (std::size_t i = 0; i + 1 < poly.size(); ++i) {
-      std::array<double, 3> d{poly[i + 1][0] - poly[i][0], poly[i + 1][1] - poly[i][1], poly[i + 1][2] - poly[i][2]};
-      const double len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-      double t = len2 > 0 ? ((p[0] - poly[i][0]) * d[0] + (p[1] - poly[i][1]) * d[1] + (p[2] - poly[i][2]) * d[2]) / len2 : 0;
-      t = std::max(0.0, std::min(1.0, t));
-      best = std::min(best, dist(p, {poly[i][0] + t * d[0], poly[i][1] + t * d[1], poly[i][2] + t * d[2]}));
-    }
-    return best;
-  };
+  // symmetric: each side, reflected in y = 0, lies on the other side's runs
   for (int k = 0; k < 2; ++k)
-    for (const auto& p : curves[k]) CHECK(to_polyline({p[0], -p[1], p[2]}, curves[1 - k]) < 2e-3);
+    for (const auto& r : runs[k])
+      for (const auto& p : r) {
+        double best = 1e300;
+        for (const auto& other : runs[1 - k]) best = std::min(best, to_polyline({p[0], -p[1], p[2]}, other));
+        CHECK(best < 2e-3);
+      }
+}
+}  // namespace
+
+TEST_CASE("teapot: the handle and the spout cut the body along closed curves, symmetric about y = 0",
+          "[surface][teapot]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  check_closed_symmetric_curve(doc.patches, {{12, 5}}, {{13, 6}}, 400);           // handle, upper end
+  check_closed_symmetric_curve(doc.patches, {{16, 4}, {16, 8}}, {{17, 7}, {17, 11}}, 700);  // spout base
 }
