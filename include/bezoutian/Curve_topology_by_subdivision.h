@@ -91,7 +91,7 @@ struct Subdivision_topology_options {
   /// partner domain, internal/double_partner_witness.h). Such a box is not analysed: it is recorded in
   /// Curve_topology_in_box::excluded_regions and the arcs that enter it end at phantom_cut vertices.
   std::function<bool(const Parameter_box&)> no_genuine_points;
-  int genuine_test_depth = 3;  ///< the test is tried on boxes that are neither excluded nor simple from this depth
+  int genuine_test_depth = 2;  ///< the test is tried on boxes that are not excluded, from this depth
 };
 
 /// Result of subdivide_curve_in_box().
@@ -184,12 +184,18 @@ class Subdivision_topology {
       const Interval_grid& g = *B.grid;
       const int n = int(g.size());
       if (common_sign(n, [&](int k) { return g.at(k / (b_ + 1), k % (b_ + 1)); }) != 0) continue;  // excluded
+      // a box proved free of genuine points is not analysed (also a simple one: its phantom arcs are dropped, so
+      // that a locus without genuine points comes out empty)
+      if (o_.no_genuine_points && B.depth >= o_.genuine_test_depth &&
+          o_.no_genuine_points(Parameter_box{B.u0, B.u1, B.v0, B.v1}) && excise(B))
+        continue;
+      if (failed_) {
+        res.reason = failure_;
+        return res;
+      }
       const bool dv = b_ >= 1 && difference_sign(g, false) != 0;
       const bool du = a_ >= 1 && difference_sign(g, true) != 0;
       if ((dv || du) && resolve(B, dv)) continue;
-      if (!failed_ && o_.no_genuine_points && B.depth >= o_.genuine_test_depth &&
-          o_.no_genuine_points(Parameter_box{B.u0, B.u1, B.v0, B.v1}) && excise(B))
-        continue;
       if (!failed_ && B.depth >= o_.singular_analysis_depth && resolve_singular(B)) continue;
       if (failed_) {
         res.reason = failure_;

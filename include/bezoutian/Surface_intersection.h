@@ -320,7 +320,8 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   L.equation = self_intersection_equation(patch, o.formula);
   if (L.equation.is_degenerate())
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
-                        "Theorems 4-5, e.g. it covers a surface twice)");
+                        "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
+                        "infinity, as for an exact graph (u, v, f(u,v)))");
   {  // nodes and isolated points of D = 0 are proved by two partners (internal/double_partner_witness.h)
     Surface_intersection_options ow = o;
     if (!ow.subdivision.singular_point_witness) {
