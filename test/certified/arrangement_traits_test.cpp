@@ -2,6 +2,7 @@
 // formula V - E + F = 1 + components), tangencies, rational circles compared with CGAL's conic traits counts,
 // and seeded random polynomial cubics cross-checked against CGAL's own Arr_Bezier_curve_traits_2.
 #include <bezoutian/Arr_rational_bezier_traits_2.h>
+#include <bezoutian/io/Cgal_dat_format.h>
 
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Arr_naive_point_location.h>
@@ -18,6 +19,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdio>
 #include <list>
 #include <random>
 #include <sstream>
@@ -643,4 +645,39 @@ TEST_CASE("arrangement traits: landmark point location agrees with naive point l
     }
   CHECK(faces > 100);
   CHECK(others > 0);  // (0, 1), (1, 1), (1, 0), ... lie on the circles
+}
+
+// CGAL's own Bezier example data (Debian package libcgal-demo, examples.tar.gz, installed by
+// scripts/install-dependencies.sh): the same V/E/F as CGAL's Arr_Bezier_curve_traits_2 on the same file.
+TEST_CASE("arrangement traits: same V/E/F as CGAL's Bezier traits on CGAL's Bezier.dat", "[arrangement][cgal]") {
+  const char* archive = "/usr/share/doc/libcgal-dev/examples.tar.gz";
+  const std::string command =
+      std::string("tar -xzOf ") + archive + " examples/Arrangement_on_surface_2/Bezier.dat 2>/dev/null";
+  std::string text;
+  if (FILE* f = popen(command.c_str(), "r")) {
+    char buffer[4096];
+    std::size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    pclose(f);
+  }
+  INFO("CGAL's Bezier.dat from " << archive << " (package libcgal-demo)");
+  REQUIRE_FALSE(text.empty());
+  const auto doc = bezoutian::io::read_dat(text, "Bezier.dat");
+  REQUIRE(doc.curves_2.size() == 10);  // the file lists 10 curves
+  const Counts a = counts_of(doc.curves_2);
+  std::istringstream in(text);
+  std::size_t n = 0;
+  in >> n;
+  std::vector<Cgal_traits::Curve_2> theirs(n);
+  for (auto& c : theirs) in >> c;
+  REQUIRE(n == doc.curves_2.size());
+  Cgal_traits ctr;
+  Cgal_arr carr(&ctr);
+  CGAL::insert(carr, theirs.begin(), theirs.end());
+  CHECK(a.valid);
+  CHECK(carr.is_valid());
+  CHECK(a.v == carr.number_of_vertices());
+  CHECK(a.e == carr.number_of_edges());
+  CHECK(a.f == carr.number_of_faces());
+  CHECK(a.iso == carr.number_of_isolated_vertices());
 }
