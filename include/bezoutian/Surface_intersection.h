@@ -301,6 +301,25 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   return true;
 }
 
+// The geometric proofs used by the subdivision (internal/double_partner_witness.h): nodes and isolated points of
+// D = 0 proved by two partners, and regions without any partner in the partner domain left out. Hooks set by the
+// caller are kept.
+inline Surface_intersection_options with_partner_proofs(const Surface_intersection_options& o,
+                                                        const Partner_equations& eq) {
+  Surface_intersection_options ow = o;
+  if (!ow.subdivision.singular_point_witness)
+    ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
+      return prove_double_partner_point(eq, b, x);
+    };
+  if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
+    const Parameter_box domain = o.partner_domain;
+    ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
+      return no_genuine_partner(eq, b, domain);
+    };
+  }
+  return ow;
+}
+
 // A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
 // after polishing): a failed polish must not be reported as a double point.
 inline bool verified(const Locus_point& q) {
@@ -322,23 +341,8 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
                         "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
                         "infinity, as for an exact graph (u, v, f(u,v)))");
-  {  // nodes and isolated points of D = 0 are proved by two partners (internal/double_partner_witness.h)
-    Surface_intersection_options ow = o;
-    if (!ow.subdivision.singular_point_witness) {
-      const internal::Partner_equations eq(patch);
-      ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
-        return internal::prove_double_partner_point(eq, b, x);
-      };
-      // phantom regions (no partner in the partner domain, proved) are not analysed
-      if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
-        const Parameter_box domain = o.partner_domain;
-        ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
-          return internal::no_genuine_partner(eq, b, domain);
-        };
-      }
-    }
-    if (!internal::topology_is_affordable(L, ow)) return L;
-  }
+  if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch))))
+    return L;
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double v, const std::array<double, 2>* guess) {
     Locus_point q;
@@ -466,23 +470,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
                         "are not generic in the sense of Theorems 2-3");
-  {  // nodes and isolated points of D = 0 are proved by two partners (internal/double_partner_witness.h)
-    Surface_intersection_options ow = o;
-    if (!ow.subdivision.singular_point_witness) {
-      const internal::Partner_equations eq(phi, psi);
-      ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
-        return internal::prove_double_partner_point(eq, b, x);
-      };
-      // phantom regions (no partner in the partner domain, proved) are not analysed
-      if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
-        const Parameter_box domain = o.partner_domain;
-        ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
-          return internal::no_genuine_partner(eq, b, domain);
-        };
-      }
-    }
-    if (!internal::topology_is_affordable(L, ow)) return L;
-  }
+  if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi))))
+    return L;
   const Bezoutian_matrix& B = L.equation.matrix;
   internal::lift_arcs(L, [&](double u, double t, const std::array<double, 2>* guess) {
     Locus_point q;
