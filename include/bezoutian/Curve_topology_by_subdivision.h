@@ -756,8 +756,8 @@ class Subdivision_topology {
     const Interval_grid& g = *B.grid;
     if (a_ + b_ < 2) return false;
     // (1) regular Hessian on B
+    // the two D_uv entries are independent copies: the mean-value Jacobian takes its rows at different points
     const I hxx = hessian_range(g, 0), hxy = hessian_range(g, 1), hyx = hxy, hyy = hessian_range(g, 2);
-    (void)hyx;
     const I det = hxx * hyy - hxy * hyx;
     if (det.contains_zero()) return false;
     const bool extremum = det.positive();
@@ -819,7 +819,6 @@ class Subdivision_topology {
       if (!krawczyk_prove<2>(X, value, jacobian)) break;
       if (!(X[0].width_double() + X[1].width_double() < 0.5 * w0)) break;
     }
-    const I zero = I::hull(Rational(0), Rational(0), prec_), one = I::hull(Rational(1), Rational(1), prec_);
     if (!X[0].strictly_inside(I::hull(Rational(0), Rational(1), prec_)) ||
         !X[1].strictly_inside(I::hull(Rational(0), Rational(1), prec_)))
       return false;
@@ -870,8 +869,6 @@ class Subdivision_topology {
       }
       arcs_.push_back(arc);
     }
-    (void)zero;
-    (void)one;
     return true;
   }
 

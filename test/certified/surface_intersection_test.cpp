@@ -7,6 +7,7 @@
 
 #include <bezoutian/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
+#include "power_patch.h"
 
 #include <set>
 
@@ -16,11 +17,7 @@ using Patch = Rational_bezier_patch<>;
 
 namespace {
 Patch from_power(const std::array<std::string, 3>& xyz, int m, int n) {
-  // power-basis patch via the JSON reader (exact)
-  std::string json = "{\"patch\": {\"basis\": \"power\", \"parameters\": [\"u\", \"v\"], \"x\": \"" + xyz[0] +
-                     "\", \"y\": \"" + xyz[1] + "\", \"z\": \"" + xyz[2] + "\", \"degree\": [" + std::to_string(m) +
-                     ", " + std::to_string(n) + "]}}";
-  return io::read_json(json, "test").patches.at(0);
+  return bezoutian_test::patch_from_power(xyz, m, n);
 }
 }  // namespace
 

@@ -240,24 +240,21 @@ class Partner_equations {
         F.fu[j][i] = i < m ? F.f[j][i + 1] * (i + 1) : Rational(0);
         F.fv[j][i] = j < n ? F.f[j + 1][i] * (j + 1) : Rational(0);
       }
-    auto to_d = [](const std::vector<std::vector<Rational>>& x) {
-      std::vector<std::vector<double>> r(x.size());
+    // double copies for the floating-point searches, outward enclosures for the interval proofs
+    auto convert = [](const std::vector<std::vector<Rational>>& x, auto to) {
+      std::vector<std::vector<decltype(to(x[0][0]))>> r(x.size());
       for (std::size_t j = 0; j < x.size(); ++j)
-        for (const auto& c : x[j]) r[j].push_back(CGAL::to_double(c));
+        for (const auto& c : x[j]) r[j].push_back(to(c));
       return r;
     };
-    F.df = to_d(F.f);
-    F.dfu = to_d(F.fu);
-    F.dfv = to_d(F.fv);
-    auto to_i = [](const std::vector<std::vector<Rational>>& x) {
-      std::vector<std::vector<Double_interval>> r(x.size());
-      for (std::size_t j = 0; j < x.size(); ++j)
-        for (const auto& c : x[j]) r[j].push_back(Double_interval::of(c));
-      return r;
-    };
-    F.if_ = to_i(F.f);
-    F.ifu = to_i(F.fu);
-    F.ifv = to_i(F.fv);
+    auto to_d = [](const Rational& c) { return CGAL::to_double(c); };
+    auto to_i = [](const Rational& c) { return Double_interval::of(c); };
+    F.df = convert(F.f, to_d);
+    F.dfu = convert(F.fu, to_d);
+    F.dfv = convert(F.fv, to_d);
+    F.if_ = convert(F.f, to_i);
+    F.ifu = convert(F.fu, to_i);
+    F.ifv = convert(F.fv, to_i);
     return F;
   }
   template <class T>
