@@ -1,5 +1,6 @@
 // Curve/curve intersection timings: du-1989 Tables 4.1/4.2 protocol (3D rational and polynomial curves, degrees
-// 3-2 .. 3-6, 0-4 known intersections, N problems each, median per strategy) and planar pairs of degree 7 and 12.
+// 3-2 .. 3-6, 0-4 known intersections, N problems each, median per strategy) and planar pairs of degree 7 and 12
+// (default = lazy parameters, + materializing every parameter, the exact default path, projection, subresultant).
 //   curve_intersection_benchmark [N=10] [N_planar_7=10] [N_planar_12=2] [singular=0]
 // With singular=1, Singular's std (lexicographic, t > s) is timed on the same system (F1, F2, F3) for the first
 // problem of each 3-2 cell (column after '|'; -1 = not run / not installed).
@@ -120,9 +121,14 @@ int main(int argc, char** argv) {
       std::printf("\n");
     }
   }
+  // Planar rows. The default method returns lazy parameters when the interval solver proves every crossing
+  // (planar_interval_solver.h): "default" is that time; "+materialize" also makes every s and t exact (eliminants
+  // R, T once per pair, then per number an isolating interval and the rationality decision); "exact default" is
+  // the default method with the lazy path switched off (multi-modular eliminants, pairing: the pre-lazy path).
   const int planar[][2] = {{3, 3}, {5, 5}, {7, n7}, {12, n12}};
   for (const auto& d : planar) {
-    std::vector<double> t[3];
+    std::vector<double> t[5];
+    int lazy = 0;
     for (int i = 0; i < d[1]; ++i) {
       Curve_problem_parameters par;
       par.degree_1 = par.degree_2 = d[0];
@@ -131,13 +137,37 @@ int main(int argc, char** argv) {
       par.range = 16;
       par.seed = 777 + i;
       const auto p = generate_curve_problem<2>(par);
-      t[0].push_back(time_ms(p, Curve_intersection_method::default_method));
-      t[1].push_back(time_ms(p, Curve_intersection_method::projection));
-      if (d[0] <= 7) t[2].push_back(time_ms(p, Curve_intersection_method::subresultant));
+      {
+        auto t0 = std::chrono::steady_clock::now();
+        const auto r = intersect_curves(p.curve_1, p.curve_2, Curve_intersection_method::default_method);
+        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        if (r.points.size() < p.known.size()) std::printf("ERROR: missing intersections\n");
+        bool all_lazy = !r.points.empty();
+        for (const auto& q : r.points) all_lazy = all_lazy && q.s.is_lazy() && q.t.is_lazy();
+        lazy += all_lazy;
+        t0 = std::chrono::steady_clock::now();
+        for (const auto& q : r.points) {
+          q.s.materialize();
+          q.t.materialize();
+          (void)q.s.is_rational();
+        }
+        t[0].push_back(ms);
+        t[1].push_back(ms + std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      }
+      {
+        const auto t0 = std::chrono::steady_clock::now();
+        const auto r = internal::Curve_intersection_engine<2>(p.curve_1, p.curve_2,
+                                                              Curve_intersection_method::default_method, false).run();
+        t[2].push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+        if (r.points.size() < p.known.size()) std::printf("ERROR: missing intersections\n");
+      }
+      t[3].push_back(time_ms(p, Curve_intersection_method::projection));
+      if (d[0] <= 7) t[4].push_back(time_ms(p, Curve_intersection_method::subresultant));
     }
-    std::printf("planar degree %d-%d, %d problems (2-4 known intersections, rational and polynomial): median %.2f ms "
-                "default, %.2f ms projection, %.2f ms subresultant (not run above degree 7)\n", d[0], d[0], d[1],
-                median(t[0]), median(t[1]), median(t[2]));
+    std::printf("planar degree %d-%d, %d problems (2-4 known intersections, rational and polynomial; %d of them all "
+                "lazy): median %.2f ms default (lazy), %.2f ms default + materializing every s, t (exact), %.2f ms "
+                "exact default path, %.2f ms projection, %.2f ms subresultant (not run above degree 7)\n",
+                d[0], d[0], d[1], lazy, median(t[0]), median(t[1]), median(t[2]), median(t[3]), median(t[4]));
   }
   return 0;
 }

@@ -14,18 +14,107 @@
 
 #include <CGAL/Interval_nt.h>
 
+#include <mpfi.h>
+
 #include <algorithm>
 #include <memory>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace bezoutian {
 
 namespace internal {
 struct Algebraic_real_access;
+
+/// The square-free factors (canonical, pairwise coprime) of a nonzero integer polynomial, with shared coefficient
+/// vectors: the exact data that lazily known numbers materialize from (one per eliminant, shared by its roots).
+struct Lazy_eliminant {
+  struct Factor {
+    Polynomial_1<Integer> poly;
+    std::shared_ptr<const Mpz_vector> c;   // its coefficients (shared by the numbers it defines)
+    std::vector<Rational> rational_roots;  // rational roots found so far
+    bool others_irrational = false;        // proved: no rational root besides rational_roots
+  };
+  std::vector<Factor> factors;
+  explicit Lazy_eliminant(const Polynomial_1<Integer>& f) {
+    for (const auto& fm : square_free_factors(canonical_integer(f)))
+      factors.push_back(Factor{fm.first, std::make_shared<const Mpz_vector>(coefficients_of(fm.first)), {}, false});
+    add_rational_candidates({});
+  }
+  /// Keeps the candidates that are roots (exact signs), divides them out and tries to prove by the modular test
+  /// (has_no_rational_root_modular) that no other rational root is left, so that materialized roots need not be
+  /// refined to width 1/lc^2 to be shown irrational (the rational root test of resolve_rationality).
+  void add_rational_candidates(const std::vector<Rational>& candidates) {
+    for (Factor& f : factors) {
+      if (f.poly.degree() < 2) {
+        f.others_irrational = true;
+        continue;
+      }
+      for (const Rational& q : candidates)
+        if (std::find(f.rational_roots.begin(), f.rational_roots.end(), q) == f.rational_roots.end() &&
+            sign_at(*f.c, q) == 0)
+          f.rational_roots.push_back(q);
+      Mpz_vector h = *f.c;
+      for (const Rational& q : f.rational_roots) {  // h <- h / (den x - num), exact
+        mpz_srcptr p = mpq_numref(q.mpq()), d = mpq_denref(q.mpq());
+        const int n = static_cast<int>(h.size()) - 1;
+        Mpz_vector r(n);
+        Mpz t;
+        mpz_divexact(r[n - 1].get(), h[n].get(), d);
+        for (int i = n - 1; i >= 1; --i) {
+          mpz_mul(t.get(), p, r[i].get());
+          mpz_add(t.get(), t.get(), h[i].get());
+          mpz_divexact(r[i - 1].get(), t.get(), d);
+        }
+        h.swap(r);
+      }
+      f.others_irrational = h.size() < 3 || has_no_rational_root_modular(h);
+    }
+  }
+};
+
+/// Sign of the derivative of the polynomial c on the closed interval [lo, hi] (MPFI Horner, outward rounding,
+/// precision above the coefficient sizes); 0 if the enclosure contains 0.
+inline int derivative_sign_on(const Mpz_vector& c, const Rational& lo, const Rational& hi) {
+  const int n = static_cast<int>(c.size()) - 1;
+  if (n < 1) return 0;
+  std::size_t bits = 0;
+  for (const Mpz& x : c) bits = std::max<std::size_t>(bits, mpz_sizeinbase(x.get(), 2));
+  const mpfr_prec_t prec = static_cast<mpfr_prec_t>(bits + 2 * mpz_sizeinbase(mpq_denref(lo.mpq()), 2) + 128);
+  mpfi_t x, r;
+  mpfi_init2(x, prec);
+  mpfi_init2(r, prec);
+  mpfi_interv_q(x, lo.mpq(), hi.mpq());
+  Mpz t;
+  mpz_mul_ui(t.get(), c[n].get(), static_cast<unsigned long>(n));
+  mpfi_set_z(r, t.get());
+  for (int i = n - 1; i >= 1; --i) {
+    mpfi_mul(r, r, x);
+    mpz_mul_ui(t.get(), c[i].get(), static_cast<unsigned long>(i));
+    mpfi_add_z(r, r, t.get());
+  }
+  const int s = mpfi_is_strictly_pos(r) > 0 ? 1 : (mpfi_is_strictly_neg(r) > 0 ? -1 : 0);
+  mpfi_clear(x);
+  mpfi_clear(r);
+  return s;
 }
+
+/// Origin of numbers that are first known by a closed rational enclosure proved to contain them (e.g. a Krawczyk
+/// box of a curve intersection) and made exact on demand (Algebraic_real's lazy representation). A source serves
+/// several numbers, told apart by `index`.
+class Lazy_real_source {
+ public:
+  virtual ~Lazy_real_source() {}
+  /// A nonzero polynomial (square-free factors) of which number `index` is a root; computed once and shared.
+  virtual const Lazy_eliminant& eliminant(int index) = 0;
+  /// Shrinks the closed enclosure [lo, hi] of number `index` (it keeps containing the number) towards width <= w;
+  /// false if no certified progress was possible (the number is then materialized instead).
+  virtual bool contract(int index, Rational& lo, Rational& hi, const Rational& w) = 0;
+};
+}  // namespace internal
 
 /// A real algebraic number, represented exactly.
 ///
@@ -42,6 +131,19 @@ struct Algebraic_real_access;
 /// refines all. Refinement happens inside const member functions (the
 /// number does not change, only its representation); objects are therefore
 /// not safe to use concurrently from several threads.
+///
+/// Exact on demand: a number may also be *lazy*, known first only by a closed
+/// rational enclosure [lo, hi] proved to contain it and a shared source
+/// (internal::Lazy_real_source) able to contract the enclosure and to give a
+/// polynomial vanishing at it (e.g. intersect_curves' planar default path).
+/// to_interval(), to_double(), to_decimal_string(), compare() and sign() use
+/// (and contract) the enclosure while it decides; every member that needs the
+/// exact representation (is_rational(), rational_value(), polynomial(),
+/// lower(), upper(), sign_at_lower(), refine(), refine_to_width(), sign_of(),
+/// rational_between(), negated(), operator<<, and compare() when the
+/// enclosures cannot separate the numbers) materializes it first: the root of
+/// the source's polynomial in [lo, hi], the enclosure contracted until it
+/// holds only one root, rational roots recognised as above.
 class Algebraic_real {
  public:
   /// Zero.
@@ -67,9 +169,22 @@ class Algebraic_real {
   }
 
   /// True iff the number is rational (exact predicate, see the class comment).
-  bool is_rational() const { return rep_->exact; }
+  bool is_rational() const {
+    materialize();
+    return rep_->exact;
+  }
+  /// True while the number is known only by its enclosure (see the class comment).
+  bool is_lazy() const { return bool(rep_->src); }
+  /// A closed interval [first, second] containing the number, without materializing: the enclosure of a lazy
+  /// number, otherwise the isolating interval (open, irrational numbers) or the value twice (rationals).
+  std::pair<Rational, Rational> enclosure() const { return {rep_->lo, rep_->hi}; }
+  /// Makes a lazy number exact (no effect otherwise).
+  void materialize() const {
+    if (rep_->src) rep_->materialize();
+  }
   /// The value, if is_rational(); throws Invalid_input otherwise.
   Rational rational_value() const {
+    materialize();
     if (!rep_->exact) throw Invalid_input("Algebraic_real::rational_value(): the number is irrational");
     return rep_->lo;
   }
@@ -77,15 +192,29 @@ class Algebraic_real {
   /// Defining polynomial: square-free, primitive, positive leading
   /// coefficient; q x - p for the rational p/q. It may be replaced by a
   /// divisor when comparisons discover a common factor.
-  const Polynomial_1<Integer>& polynomial() const { return rep_->poly; }
-  /// Ends of the isolating interval (both equal to the value for rationals).
-  Rational lower() const { return rep_->lo; }
-  Rational upper() const { return rep_->hi; }
+  const Polynomial_1<Integer>& polynomial() const {
+    materialize();
+    return rep_->poly;
+  }
+  /// Ends of the isolating interval (both equal to the value for rationals). Materializes a lazy number
+  /// (enclosure() gives the enclosure without doing so).
+  Rational lower() const {
+    materialize();
+    return rep_->lo;
+  }
+  Rational upper() const {
+    materialize();
+    return rep_->hi;
+  }
   /// Sign of polynomial() at lower() (0 for rationals).
-  int sign_at_lower() const { return rep_->exact ? 0 : rep_->sign_lo; }
+  int sign_at_lower() const {
+    materialize();
+    return rep_->exact ? 0 : rep_->sign_lo;
+  }
 
   /// Halves the isolating interval (one bisection, exact sign at the midpoint).
   void refine() const {
+    materialize();
     if (!rep_->exact) rep_->bisect();
   }
 
@@ -94,12 +223,17 @@ class Algebraic_real {
   /// its ends (quadratic convergence), with bisection as the fallback.
   void refine_to_width(const Rational& w) const {
     if (!(w > Rational(0))) throw Invalid_input("Algebraic_real::refine_to_width: width must be positive");
+    materialize();
     rep_->refine_to_width(w);
   }
 
   /// Double interval containing the number, at most a few ulps wide (refines).
   std::pair<double, double> to_interval() const {
     Rep& r = *rep_;
+    if (r.src) {  // lazy: contract the enclosure to relative width 2^-55 (0 outside it), else materialize
+      if (r.lazy_narrow_relative(55)) return {CGAL::to_interval(r.lo).first, CGAL::to_interval(r.hi).second};
+      materialize();
+    }
     r.separate_from_zero();
     if (!r.exact) {
       Rational m = CGAL::abs(r.lo) < CGAL::abs(r.hi) ? CGAL::abs(r.lo) : CGAL::abs(r.hi);
@@ -115,7 +249,7 @@ class Algebraic_real {
   double to_double() const {
     to_interval();  // refines to relative width 2^-55
     internal::Mpfr x(53);
-    const Rational mid = rep_->exact ? rep_->lo : (rep_->lo + rep_->hi) / 2;
+    const Rational mid = rep_->exact ? rep_->lo : (rep_->lo + rep_->hi) / 2;  // (lazy: the enclosure's)
     mpfr_set_q(x.get(), mid.mpq(), MPFR_RNDN);
     return mpfr_get_d(x.get(), MPFR_RNDN);
   }
@@ -128,6 +262,14 @@ class Algebraic_real {
   std::string to_decimal_string(int significant_digits) const {
     if (significant_digits < 1) throw Invalid_input("to_decimal_string: need at least one digit");
     Rep& r = *rep_;
+    for (int extra = 4; r.src && extra <= 68; extra += 16) {  // lazy: contracted enclosure, both ends rounded
+      if (!r.lazy_narrow_relative(static_cast<unsigned long>(extra + 4 * significant_digits))) break;
+      const bool neg = r.hi <= Rational(0);
+      auto a = internal::round_to_significant(r.lo, significant_digits);
+      auto b = internal::round_to_significant(r.hi, significant_digits);
+      if (a == b) return internal::format_significant(neg, a.first, a.second);
+    }
+    materialize();
     r.separate_from_zero();
     for (int extra = 4;; extra += 16) {
       if (r.exact) return internal::rational_to_decimal_string(r.lo, significant_digits);
@@ -155,6 +297,12 @@ class Algebraic_real {
   /// after which both numbers share the smaller defining polynomial.
   int compare(const Algebraic_real& other) const {
     if (rep_ == other.rep_) return 0;
+    if (rep_->src || other.rep_->src) {
+      const int c = compare_enclosures(*rep_, *other.rep_);
+      if (c != 2) return c;
+      materialize();
+      other.materialize();
+    }
     Rep& a = *rep_;
     Rep& b = *other.rep_;
     bool gcd_done = false;
@@ -218,6 +366,13 @@ class Algebraic_real {
   /// Exact comparison with a rational (refines the interval against q).
   int compare(const Rational& q) const {
     Rep& r = *rep_;
+    if (r.src) {
+      Rep p;
+      p.set_exact(q);
+      const int c = compare_enclosures(r, p);
+      if (c != 2) return c;
+      materialize();
+    }
     if (r.exact) return CGAL::compare(r.lo, q);
     if (q <= r.lo) return 1;
     if (q >= r.hi) return -1;
@@ -236,6 +391,7 @@ class Algebraic_real {
     const Polynomial_1<Integer> F = internal::integer_multiple(f);  // positive multiple
     if (CGAL::is_zero(F)) return 0;
     const internal::Mpz_vector fc = internal::coefficients_of(F);
+    materialize();
     Rep& r = *rep_;
     if (F.degree() == 0 || r.exact) return internal::sign_at(fc, r.lo);
     bool gcd_done = false;
@@ -306,6 +462,7 @@ class Algebraic_real {
 
   /// -x: the root of P(-x) in (-hi, -lo).
   Algebraic_real negated() const {
+    materialize();
     const Rep& r = *rep_;
     if (r.exact) return Algebraic_real(Rational(-r.lo));
     auto c = std::make_shared<internal::Mpz_vector>(*r.c);
@@ -327,8 +484,118 @@ class Algebraic_real {
     Rational lo, hi;             // lo == hi == value when exact
     int sign_lo = 0;             // sign of poly at lo (nonzero unless exact)
     bool exact = true;
+    // Lazy state (src non-null): [lo, hi] is a CLOSED enclosure, poly/c/sign_lo are unset, exact is false.
+    std::shared_ptr<internal::Lazy_real_source> src;
+    int src_index = 0;
+
+    // Contracts a lazy enclosure to width <= w through the source; false if it could not.
+    bool lazy_contract(const Rational& w) {
+      if (hi - lo <= w) return true;
+      Rational l = lo, h = hi;
+      if (!src->contract(src_index, l, h, w)) return false;
+      if (l > lo) lo = l;  // (the source keeps the number inside)
+      if (h < hi) hi = h;
+      return hi - lo <= w;
+    }
+    // Lazy: contracts the enclosure until 0 is outside it and its width is <= min(|lo|,|hi|) 2^-bits.
+    bool lazy_narrow_relative(unsigned long bits) {
+      for (int round = 0; round < 3; ++round) {
+        if (CGAL::sign(lo) * CGAL::sign(hi) > 0) {
+          const Rational m = CGAL::abs(lo) < CGAL::abs(hi) ? CGAL::abs(lo) : CGAL::abs(hi);
+          Rational w;
+          mpq_div_2exp(w.mpq(), m.mpq(), static_cast<mp_bitcnt_t>(bits));
+          return lazy_contract(w);
+        }
+        Rational w;  // straddles or touches 0: shrink towards a width that may exclude it
+        mpq_div_2exp(w.mpq(), Rational(hi - lo).mpq(), 32);
+        if (!lazy_contract(w)) return false;
+      }
+      return false;
+    }
+
+    // The exact representation of a lazy number: the root in [lo, hi] of the source's polynomial. While the
+    // enclosure holds several roots, it is contracted (distinct roots are separated; the contraction keeps the
+    // number), then the isolating interval comes from Descartes' rule on the factor holding it.
+    void materialize() {
+      std::shared_ptr<internal::Lazy_real_source> s = src;
+      const internal::Lazy_eliminant& E = s->eliminant(src_index);
+      unsigned long bits = 16;
+      for (int round = 0;; ++round) {
+        if (lo == hi) {  // a point enclosure is the number itself
+          set_exact(lo);
+          break;
+        }
+        std::size_t count = 0;
+        const internal::Lazy_eliminant::Factor* holder = nullptr;
+        internal::Rational_isolating_interval iv;
+        // Cheap certificate first: every factor strictly monotone on [lo, hi] (derivative enclosure without 0)
+        // has at most one root there, exactly one iff its signs at the ends differ.
+        // (Horner's interval enclosure of the derivative is only sharp on narrow enclosures: the power-basis
+        // coefficients cancel, so the enclosure is first contracted, cheaply, through the source.)
+        bool monotone = true;
+        for (unsigned long extra = 0;; extra = extra == 0 ? 64 : 2 * extra) {
+          if (extra > 0) {
+            Rational w;  // fresh object
+            mpq_div_2exp(w.mpq(), Rational(hi - lo).mpq(), static_cast<mp_bitcnt_t>(extra));
+            if (extra > 2048 || !lazy_contract(w)) break;
+          }
+          bool all = true;
+          for (const auto& f : E.factors)
+            if (internal::derivative_sign_on(*f.c, lo, hi) == 0) all = false;
+          if (all) break;
+        }
+        if (lo == hi) {
+          set_exact(lo);
+          break;
+        }
+        for (const auto& f : E.factors) {
+          const int sl = internal::sign_at(*f.c, lo), sh = internal::sign_at(*f.c, hi);
+          if (sl == 0 || sh == 0 || internal::derivative_sign_on(*f.c, lo, hi) == 0) {
+            monotone = false;
+            break;
+          }
+          if (sl != sh) {
+            ++count;
+            holder = &f;
+            iv.lo = lo;
+            iv.hi = hi;
+            iv.sign_lo = sl;
+          }
+        }
+        if (!monotone) count = 0;
+        for (const auto& f : E.factors) {
+          if (monotone) break;
+          for (auto& r : internal::isolate_square_free(*f.c, lo, hi)) {
+            ++count;
+            holder = &f;
+            iv = r;
+          }
+        }
+        if (count == 0) throw Error("Algebraic_real: a lazy enclosure holds no root of its polynomial");
+        if (count == 1) {
+          if (iv.exact) set_exact(iv.lo);
+          else if (holder->poly.degree() == 1) set_exact(Rational(-holder->poly[0], holder->poly[1]));
+          else set_interval(holder->poly, holder->c, iv.lo, iv.hi, iv.sign_lo);
+          for (const Rational& q : holder->rational_roots)
+            if (!exact && lo < q && q < hi) set_exact(q);  // the only root of the factor in (lo, hi)
+          if (!exact && !holder->others_irrational) {
+            try_small_rational(32);
+            resolve_rationality();
+          }
+          src.reset();
+          return;
+        }
+        Rational w;
+        mpq_div_2exp(w.mpq(), Rational(hi - lo).mpq(), static_cast<mp_bitcnt_t>(bits));
+        bits = std::min<unsigned long>(2 * bits, 1UL << 16);
+        if (round > 64 || !lazy_contract(w))
+          throw Error("Algebraic_real: cannot separate the roots of a lazy number's polynomial");
+      }
+      src.reset();
+    }
 
     void set_exact(const Rational& q) {
+      src.reset();
       std::vector<Integer> v{Integer(mpq_numref(q.mpq())) * Integer(-1), Integer(mpq_denref(q.mpq()))};
       poly = Polynomial_1<Integer>(v.begin(), v.end());
       c = std::make_shared<const internal::Mpz_vector>(internal::coefficients_of(poly));
@@ -344,6 +611,7 @@ class Algebraic_real {
       hi = h;
       sign_lo = s_lo;
       exact = false;
+      src.reset();
     }
     // For lo < m < hi: +1 if the root is > m, -1 if < m, 0 if it is m
     // (then the number becomes exact); the interval shrinks accordingly.
@@ -465,6 +733,29 @@ class Algebraic_real {
     rep_->resolve_rationality();
   }
 
+  // Compares with the enclosures only (at least one lazy): closed lazy enclosures, open isolating intervals,
+  // points for rationals; lazy enclosures are contracted (and exact intervals refined) a few times. Returns 2 when
+  // undecided (then both are materialized and compared exactly: equal numbers are never separated this way).
+  static int compare_enclosures(Rep& a, Rep& b) {
+    for (int round = 0;; ++round) {
+      // a < b if every point of a's enclosure is below every point of b's (strictly where both ends are closed)
+      const bool a_open = !a.src && !a.exact, b_open = !b.src && !b.exact;
+      if (a.hi < b.lo || (a.hi == b.lo && (a_open || b_open))) return -1;
+      if (b.hi < a.lo || (b.hi == a.lo && (a_open || b_open))) return 1;
+      if (round >= 3) return 2;
+      const Rational m = std::max(a.hi - a.lo, b.hi - b.lo);
+      Rational w;  // fresh object: CGAL::Gmpq copies share their mpq_t
+      mpq_div_2exp(w.mpq(), m.mpq(), round == 0 ? 24 : 64);
+      for (Rep* r : {&a, &b}) {
+        if (r->src) {
+          if (!r->lazy_contract(w)) return 2;
+        } else if (!r->exact) {
+          r->refine_to_width(w);
+        }
+      }
+    }
+  }
+
   // w / 2^bits as a fresh object.
   static Rational shrunk_width(const Rational& w, unsigned long bits) {
     Rational r;
@@ -497,9 +788,28 @@ struct Algebraic_real_access {
     return a;
   }
   static void resolve_rationality(const Algebraic_real& a, bool modular_test_done) {
+    a.materialize();
     a.rep_->resolve_rationality(modular_test_done);
   }
-  static void try_small_rational(const Algebraic_real& a, std::size_t bits) { a.rep_->try_small_rational(bits); }
+  static void try_small_rational(const Algebraic_real& a, std::size_t bits) {
+    a.materialize();
+    a.rep_->try_small_rational(bits);
+  }
+  /// A lazy number: the one of `source` numbered `index`, known to lie in the closed interval [lo, hi] (lo <= hi).
+  static Algebraic_real lazy(std::shared_ptr<Lazy_real_source> source, int index, const Rational& lo,
+                             const Rational& hi) {
+    Algebraic_real a;
+    Algebraic_real::Rep& r = *a.rep_;
+    r.lo = lo;
+    r.hi = hi;
+    r.exact = false;
+    r.sign_lo = 0;
+    r.poly = Polynomial_1<Integer>();
+    r.c.reset();
+    r.src = std::move(source);
+    r.src_index = index;
+    return a;
+  }
   static bool same_representation(const Algebraic_real& a, const Algebraic_real& b) { return a.rep_ == b.rep_; }
 };
 }  // namespace internal

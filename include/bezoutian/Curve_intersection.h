@@ -13,12 +13,15 @@
 #include <bezoutian/Weight_validity.h>
 #include <bezoutian/internal/curve_intersection_support.h>
 #include <bezoutian/internal/interval_krawczyk.h>
+#include <bezoutian/internal/planar_interval_solver.h>
 
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,7 +65,8 @@ inline const char* to_string(Curve_intersection_kind k) {
                                                    : (k == Curve_intersection_kind::tangent ? "tangent" : "endpoint");
 }
 
-/// One isolated intersection C1(s) = C2(t), s, t in [0,1] exact algebraic numbers.
+/// One isolated intersection C1(s) = C2(t), s, t in [0,1] exact algebraic numbers. On the planar default path
+/// they may be lazy (Algebraic_real::is_lazy(): a proved enclosure, made exact on demand; see lazy_path).
 struct Curve_intersection_point {
   Algebraic_real s, t;
   /// 1 for a transversal crossing; for tangencies the multiplicity of the root of the eliminants
@@ -87,6 +91,105 @@ struct Curve_intersection_result {
 namespace internal {
 
 template <int D>
+class Curve_intersection_engine;
+
+/// The lazy parameters of the planar default path (intersect_curves, D == 2): the intersections proved by the
+/// interval solver (planar_interval_solver.h), each a box [s_lo, s_hi] x [t_lo, t_hi] holding exactly one,
+/// transversal, intersection; number 2k is s of box k, 2k + 1 its t. Exact on demand: the eliminants R(s), T(t)
+/// (determinants of the implicit Bezout matrices, du-1989 eq. 4.1, as in the exact default path) are computed at
+/// most once per curve pair and shared by all its points; boxes are contracted by Krawczyk's operator in MPFI.
+template <int D>
+class Planar_lazy_intersections : public Lazy_real_source {
+ public:
+  using P1 = Ci_poly1;
+  Planar_lazy_intersections(const Rational_bezier_curve<Rational, D>& c1, const Rational_bezier_curve<Rational, D>& c2,
+                            const std::array<P1, 3>& H1, const std::array<P1, 3>& H2)
+      : H_{H1, H2} {
+    a.curve = c1;
+    b.curve = c2;
+    set_planar_interval_data(a, H1);
+    set_planar_interval_data(b, H2);
+    for (const auto* H : {&H1, &H2})
+      for (const P1& f : *H)
+        for (int i = 0; i <= f.degree(); ++i) bits_ = std::max(bits_, long(f[i].bit_size()));
+  }
+  Planar_interval_curve a, b;              // the two curves with the interval solver's data
+  std::vector<std::array<Rational, 4>> boxes;  // s_lo, s_hi, t_lo, t_hi (closed)
+
+  const Lazy_eliminant& eliminant(int index) override {
+    const int side = index % 2;
+    if (!fallback_ && !E_[side]) {
+      P1 R;
+      try {
+        R = Curve_intersection_engine<D>::planar_eliminant(H_[side], H_[1 - side]);
+      } catch (const Error&) {
+        R = P1(0);
+      }
+      if (CGAL::is_zero(R) || R.degree() < 1) {
+        fallback_ = true;  // a common component: exact points instead
+      } else {
+        E_[side].reset(new Lazy_eliminant(R));
+        // Rational roots are recognised cheaply through the simplest fractions in the contracted enclosures
+        // (a root p/q with q <= 2^32 is the simplest fraction of an interval of width < 2^-64 holding it).
+        std::vector<Rational> candidates;
+        Rational w(1);
+        mpz_mul_2exp(mpq_denref(w.mpq()), mpq_denref(w.mpq()), 72);
+        for (std::size_t k = 0; k < boxes.size(); ++k) {
+          Rational lo = boxes[k][2 * side], hi = boxes[k][2 * side + 1];
+          if (!contract(int(2 * k) + side, lo, hi, w) || !(lo < hi)) continue;
+          const Rational q = simplest_rational_between(lo, hi);
+          if (mpz_sizeinbase(mpq_denref(q.mpq()), 2) <= 40) candidates.push_back(q);
+        }
+        E_[side]->add_rational_candidates(candidates);
+      }
+    }
+    if (!fallback_) return *E_[side];
+    // The curves lie on one algebraic curve (R = 0): the exact intersection in the box (subresultant path).
+    auto it = per_index_.find(index);
+    if (it != per_index_.end()) return *it->second;
+    if (!exact_) {
+      exact_.reset(new Curve_intersection_result(
+          Curve_intersection_engine<D>(a.curve, b.curve, Curve_intersection_method::subresultant).run()));
+    }
+    const auto& box = boxes[index / 2];
+    for (const auto& p : exact_->points)
+      if (p.s.compare(box[0]) >= 0 && p.s.compare(box[1]) <= 0 && p.t.compare(box[2]) >= 0 && p.t.compare(box[3]) <= 0) {
+        const Algebraic_real& x = side == 0 ? p.s : p.t;
+        const P1 q = x.is_rational() ? P1(-Integer(mpq_numref(x.rational_value().mpq())),
+                                          Integer(mpq_denref(x.rational_value().mpq())))
+                                     : x.polynomial();
+        return *(per_index_[index] = std::make_shared<Lazy_eliminant>(q));
+      }
+    throw Error("intersect_curves: no exact intersection in a Krawczyk box");
+  }
+
+  bool contract(int index, Rational& lo, Rational& hi, const Rational& w) override {
+    std::array<Rational, 4>& box = boxes[index / 2];
+    const int side = index % 2;
+    box[2 * side] = std::max(box[2 * side], lo);
+    box[2 * side + 1] = std::min(box[2 * side + 1], hi);
+    // Krawczyk in MPFI: quadratic contraction down to the precision's resolution, then more precision
+    const long wbits = long(mpz_sizeinbase(mpq_denref(w.mpq()), 2)) - long(mpz_sizeinbase(mpq_numref(w.mpq()), 2));
+    mpfr_prec_t prec = mpfr_prec_t(std::max(128L, wbits + bits_ + 64));
+    for (int round = 0; round < 12 && box[2 * side + 1] - box[2 * side] > w; ++round, prec *= 2) {
+      if (prec > (mpfr_prec_t(1) << 20)) break;
+      if (!planar_krawczyk_contract(H_[0], H_[1], box, prec, 64, CGAL::to_double(w) * 0.5)) break;
+    }
+    lo = box[2 * side];
+    hi = box[2 * side + 1];
+    return hi - lo <= w;
+  }
+
+ private:
+  std::array<std::array<P1, 3>, 2> H_;
+  long bits_ = 0;
+  std::unique_ptr<Lazy_eliminant> E_[2];
+  bool fallback_ = false;
+  std::unique_ptr<Curve_intersection_result> exact_;
+  std::map<int, std::shared_ptr<Lazy_eliminant>> per_index_;
+};
+
+template <int D>
 class Curve_intersection_engine {
   using P1 = Ci_poly1;
   using P2 = Ci_poly2;
@@ -94,8 +197,9 @@ class Curve_intersection_engine {
   using Form = std::array<P1, D + 1>;
 
  public:
-  Curve_intersection_engine(const Curve& a, const Curve& b, Curve_intersection_method m)
-      : c1_(a), c2_(b), method_(m), H1_(integer_power_form(a)), H2_(integer_power_form(b)) {
+  /// planar_lazy = false skips the lazy planar path (the exact default path, for cross-checks and benchmarks).
+  Curve_intersection_engine(const Curve& a, const Curve& b, Curve_intersection_method m, bool planar_lazy = true)
+      : c1_(a), c2_(b), method_(m), planar_lazy_(planar_lazy), H1_(integer_power_form(a)), H2_(integer_power_form(b)) {
     for (const Form* H : {&H1_, &H2_})
       for (const P1& f : *H)
         for (int i = 0; i <= f.degree(); ++i) coefficient_bits_ = std::max(coefficient_bits_, long(f[i].bit_size()));
@@ -110,6 +214,11 @@ class Curve_intersection_engine {
       constant_case(k1, k2, res);
       return res;
     }
+    if (method_ == Curve_intersection_method::default_method && planar_lazy_ && lazy_path(res)) {
+      sort_points(res);
+      return res;
+    }
+    res = Curve_intersection_result();
     if (disjoint_hulls()) return res;
     if (method_ == Curve_intersection_method::default_method && fast_path(res)) {
       sort_points(res);
@@ -121,6 +230,14 @@ class Curve_intersection_engine {
     solve_system(F, res, /*allow_overlap=*/true);
     sort_points(res);
     return res;
+  }
+
+  /// R(s) of the planar default path: det M(s), M(s) = W_A(s) Bez_B(X_A/W_A, Y_A/W_A) (see fast_projection),
+  /// without the factors of W_A (no roots in [0,1]), primitive; 0 if it vanishes identically.
+  static P1 planar_eliminant(const std::array<P1, 3>& A, const std::array<P1, 3>& B) {
+    P1 R = polynomial_matrix_determinant(implicit_matrix_on(B, A));
+    if (CGAL::is_zero(R)) return R;
+    return primitive(divide_out(R, A[0]));
   }
 
   /// Self-intersections of c1 (c1 == c2): the divided differences F_k(s,t) / (s - t) (exact division, the diagonal
@@ -330,6 +447,39 @@ class Curve_intersection_engine {
 
   bool plain_method() const {
     return method_ == Curve_intersection_method::default_method || method_ == Curve_intersection_method::subresultant;
+  }
+
+  // ---------------------------------------------------------------- planar lazy path (default method)
+  // Plane curves with positive weights: the certified interval solver (planar_interval_solver.h) first. If it
+  // settles everything (every crossing a Krawczyk box strictly inside (0,1)^2, every other cell excluded, no common
+  // end point, no tangency / overlap / undecided cell), the points are returned with lazy parameters s, t
+  // (Algebraic_real, exact on demand through Planar_lazy_intersections); Krawczyk's proof includes a regular
+  // Jacobian, i.e. a transversal crossing of multiplicity 1. Otherwise false: the exact paths below decide.
+  bool lazy_path(Curve_intersection_result& res) const {
+    if constexpr (D != 2) {
+      (void)res;
+      return false;
+    } else {
+      if (!positive_weights(c1_) || !positive_weights(c2_)) return false;
+      CI_TICK_START;
+      auto data = std::make_shared<Planar_lazy_intersections<D>>(c1_, c2_, H1_, H2_);
+      Planar_interval_solver solver{data->a, data->b, {}};
+      solver.budget = 20000;  // cells; more than the arrangement's (a failure costs the exact path anyway)
+      solver.max_depth = 34;  // power-basis enclosures of large coefficients can need cells below 2^-24
+      solver.run(data->a.inet, 0, 1, data->b.inet, 0, 1, 0);
+      CI_TICK("lazy interval solver");
+      if (solver.failed || !solver.contacts.empty()) return false;
+      for (const auto& f : solver.found) {
+        const int k = int(data->boxes.size());
+        data->boxes.push_back({Rational(f[0]), Rational(f[1]), Rational(f[2]), Rational(f[3])});
+        const auto& box = data->boxes.back();
+        Curve_intersection_point p;
+        p.s = Algebraic_real_access::lazy(data, 2 * k, box[0], box[1]);
+        p.t = Algebraic_real_access::lazy(data, 2 * k + 1, box[2], box[3]);
+        res.points.push_back(p);
+      }
+      return true;
+    }
   }
 
   // ---------------------------------------------------------------- fast certified path (default method)
@@ -1094,6 +1244,7 @@ class Curve_intersection_engine {
   const Curve& c1_;
   const Curve& c2_;
   Curve_intersection_method method_;
+  bool planar_lazy_ = true;
   Form H1_, H2_;
   long coefficient_bits_ = 0;
 };
@@ -1108,6 +1259,8 @@ class Curve_intersection_engine {
 /// first subresultant S_1 of (F1,F2) w.r.t. t (valid when S11(s_i) != 0 and a leading coefficient does not vanish,
 /// both decided exactly), located among the roots of T by exact sign decisions; symmetrically in t. A vanishing
 /// resultant means a common component: overlaps are then found from the preimages of the curve ends.
+/// Plane curves, default method: a certified interval solver runs first; when it proves every intersection
+/// (transversal crossings strictly inside (0,1)^2) the parameters are returned lazily (exact on demand).
 template <int D>
 Curve_intersection_result intersect_curves(const Rational_bezier_curve<Rational, D>& c1,
                                            const Rational_bezier_curve<Rational, D>& c2,

@@ -9,6 +9,7 @@
 #include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/internal/curve_intersection_support.h>
+#include <bezoutian/internal/planar_interval_solver.h>
 
 #include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial.h>
@@ -49,9 +50,9 @@ namespace internal {
 
 /// One input curve as used by the traits: integer power form and, per coordinate, the reduced fraction
 /// N_k / D_k = X_k / W (gcd removed, so that resultants with defining polynomials never vanish identically).
-struct Arr_bezier_supporting_curve {
+/// (curve, Hd, inet: the interval solver's data, planar_interval_solver.h.)
+struct Arr_bezier_supporting_curve : Planar_interval_curve {
   std::size_t id = 0;
-  Rational_bezier_curve_2<Rational> curve;
   std::array<Ci_poly1, 3> H;        // (W, X, Y), integer coefficients
   std::array<Ci_poly1, 2> num, den;  // x = num[0]/den[0], y = num[1]/den[1]
   std::array<Ci_poly1, 2> speed;     // X_k' W - X_k W' (numerators of the derivatives of x and y)
@@ -66,10 +67,6 @@ struct Arr_bezier_supporting_curve {
   /// Proved free of self-intersections: some direction v has v . C'(t) >= 0 on [0,1] (Bernstein coefficients
   /// of v . (X'W - XW', Y'W - YW') all >= 0), so v . C(t) is strictly increasing.
   bool simple = false;
-  /// Outward-rounded double enclosures of the coefficients of (W, X, Y) and of the homogeneous control net
-  /// (w, wx, wy), for the interval solver (arr_bezier_parameter.h).
-  std::array<std::vector<CGAL::Interval_nt<false>>, 3> Hd;
-  std::vector<std::array<CGAL::Interval_nt<false>, 3>> inet;
   /// For curves not proved simple: the divided differences F_k(s,t) = (X_k(s) W(t) - X_k(t) W(s)) / (s - t),
   /// k = 1, 2, whose common zeros off the diagonal are the self-intersections; fd[k-1][p][q] encloses the
   /// coefficient of s^p t^q.
@@ -293,11 +290,7 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
   for (std::size_t i = 1; i < p.size() && j < p.size(); ++i)
     if ((p[i][0] - p[0][0]) * (p[j][1] - p[0][1]) != (p[i][1] - p[0][1]) * (p[j][0] - p[0][0])) s->linear = false;
   arr_piece_boxes(*s);
-  for (int k = 0; k < 3; ++k) {
-    s->Hd[k].clear();
-    for (int i = 0; i <= std::max(0, s->H[k].degree()); ++i)
-      s->Hd[k].push_back(CGAL::Interval_nt<false>(CGAL::to_interval(i <= s->H[k].degree() ? s->H[k][i] : Integer(0))));
-  }
+  set_planar_interval_data(*s, s->H);  // Hd, inet
   if (!s->simple && !s->linear)
     for (int k = 1; k <= 2; ++k) {
       const auto f = arr_divided_difference(s->H[k], s->H[0]);
@@ -305,9 +298,6 @@ inline std::shared_ptr<const Arr_bezier_supporting_curve> make_supporting_curve(
       for (std::size_t i = 0; i < f.size(); ++i)
         for (std::size_t j = 0; j < f.size(); ++j) s->fd[k - 1][i][j] = CGAL::Interval_nt<false>(CGAL::to_interval(f[i][j]));
     }
-  for (const auto& h : c.homogeneous_control_points())
-    s->inet.push_back({CGAL::Interval_nt<false>(CGAL::to_interval(h[0])), CGAL::Interval_nt<false>(CGAL::to_interval(h[1])),
-                       CGAL::Interval_nt<false>(CGAL::to_interval(h[2]))});
   s->simple = arr_is_simple(*s);
   return s;
 }

@@ -9,6 +9,7 @@
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/internal/arr_bezier_exact.h>
+#include <bezoutian/internal/planar_interval_solver.h>
 
 #include <CGAL/Interval_nt.h>
 
@@ -159,230 +160,22 @@ inline void arr_refine(const Arr_parameter& t) {
 }
 
 // ------------------------------------------------------------------------------------- interval solver
-typedef CGAL::Interval_nt<false> Arr_interval;
-using Arr_interval_net = std::vector<std::array<Arr_interval, 3>>;
-
-/// Value and derivative enclosures of the homogeneous power form (W, X, Y) at u (double interval Horner).
-inline void arr_eval_form(const Arr_bezier_supporting_curve& c, const Arr_interval& u, Arr_interval f[3],
-                          Arr_interval df[3]) {
-  for (int k = 0; k < 3; ++k) {
-    const auto& a = c.Hd[k];
-    const int n = int(a.size()) - 1;
-    Arr_interval v = a[n], d(0);
-    for (int i = n - 1; i >= 0; --i) {
-      d = d * u + v;
-      v = v * u + a[i];
-    }
-    f[k] = v;
-    df[k] = d;
-  }
+// The solver for two different curves lives in planar_interval_solver.h (shared with intersect_curves).
+typedef Planar_interval Arr_interval;
+using Arr_interval_net = Planar_interval_net;
+using Arr_interval_solver = Planar_interval_solver;
+inline void arr_eval_form(const Planar_interval_curve& c, const Arr_interval& u, Arr_interval f[3], Arr_interval df[3]) {
+  planar_eval_form(c, u, f, df);
 }
-
-/// Krawczyk's test (Krawczyk 1969; Moore 1977) in outward-rounded double intervals for G_k(s,t) = A_k(s) B_0(t) -
-/// B_k(t) A_0(s), k = 1, 2 on the box S x T (the same system as internal::krawczyk_unique_intersection):
-/// K(X) inside the interior of X proves exactly one zero in X, a transversal intersection. On success S, T are
-/// contracted (X <- K(X) ∩ X, which keeps the zero) `iterations` times.
-inline bool arr_krawczyk(const Arr_bezier_supporting_curve& A, const Arr_bezier_supporting_curve& B, Arr_interval& S,
-                         Arr_interval& T, int iterations) {
-  typedef Arr_interval I;
-  typename I::Protector guard;  // rounding towards +infinity for the interval operations
-  for (int round = 0; round <= iterations; ++round) {
-    const double cs = 0.5 * (S.inf() + S.sup()), ct = 0.5 * (T.inf() + T.sup());
-    I af[3], adf[3], bf[3], bdf[3], acf[3], acd[3], bcf[3], bcd[3];
-    arr_eval_form(A, S, af, adf);
-    arr_eval_form(B, T, bf, bdf);
-    arr_eval_form(A, I(cs), acf, acd);
-    arr_eval_form(B, I(ct), bcf, bcd);
-    I J[2][2], G[2];
-    for (int k = 1; k <= 2; ++k) {
-      J[k - 1][0] = adf[k] * bf[0] - bf[k] * adf[0];
-      J[k - 1][1] = af[k] * bdf[0] - bdf[k] * af[0];
-      G[k - 1] = acf[k] * bcf[0] - bcf[k] * acf[0];
-    }
-    const double m00 = CGAL::to_double(J[0][0]), m01 = CGAL::to_double(J[0][1]), m10 = CGAL::to_double(J[1][0]),
-                 m11 = CGAL::to_double(J[1][1]);
-    const double det = m00 * m11 - m01 * m10;
-    if (!std::isfinite(det) || det == 0) return round > 0;
-    const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
-    const I ds = S - I(cs), dt = T - I(ct);
-    I K[2];
-    const double c[2] = {cs, ct};
-    for (int i = 0; i < 2; ++i) {
-      const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
-      const I m0 = I(i == 0 ? 1.0 : 0.0) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
-      const I m1 = I(i == 1 ? 1.0 : 0.0) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
-      K[i] = I(c[i]) - yg + m0 * ds + m1 * dt;
-      if (!std::isfinite(K[i].inf()) || !std::isfinite(K[i].sup())) return round > 0;
-    }
-    if (round == 0 && !(K[0].inf() > S.inf() && K[0].sup() < S.sup() && K[1].inf() > T.inf() && K[1].sup() < T.sup()))
-      return false;
-    const I S2(std::max(S.inf(), K[0].inf()), std::min(S.sup(), K[0].sup()));
-    const I T2(std::max(T.inf(), K[1].inf()), std::min(T.sup(), K[1].sup()));
-    const bool progress = S2.sup() - S2.inf() < 0.99 * (S.sup() - S.inf()) || T2.sup() - T2.inf() < 0.99 * (T.sup() - T.inf());
-    S = S2;
-    T = T2;
-    if (!progress && round > 0) break;
-  }
-  return true;
+inline bool arr_krawczyk(const Planar_interval_curve& A, const Planar_interval_curve& B, Arr_interval& S, Arr_interval& T,
+                         int iterations) {
+  return planar_krawczyk(A, B, S, T, iterations);
 }
-
-/// Control box of an interval net (false if a weight enclosure is not positive).
-inline bool arr_net_box(const Arr_interval_net& net, double b[4]) {
-  b[0] = b[2] = HUGE_VAL;
-  b[1] = b[3] = -HUGE_VAL;
-  for (const auto& h : net) {
-    if (!(h[0].inf() > 0)) return false;
-    const Arr_interval x = h[1] / h[0], y = h[2] / h[0];
-    b[0] = std::min(b[0], x.inf());
-    b[1] = std::max(b[1], x.sup());
-    b[2] = std::min(b[2], y.inf());
-    b[3] = std::max(b[3], y.sup());
-  }
-  return std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
-}
-
-/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves); `tri` is scratch space.
+inline bool arr_net_box(const Arr_interval_net& net, double b[4]) { return planar_net_box(net, b); }
 inline void arr_net_halves(const Arr_interval_net& q, Arr_interval_net& left, Arr_interval_net& right,
                            Arr_interval_net& tri) {
-  tri = q;
-  const std::size_t n = q.size();
-  left.assign(1, tri[0]);
-  right.assign(1, tri[n - 1]);
-  const Arr_interval half(0.5);
-  for (std::size_t r = 1; r < n; ++r) {
-    for (std::size_t j = 0; j + r < n; ++j)
-      for (int k = 0; k < 3; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
-    left.push_back(tri[0]);
-    right.push_back(tri[n - 1 - r]);
-  }
-  std::reverse(right.begin(), right.end());
+  planar_net_halves(q, left, right, tri);
 }
-
-/// Certified transversal intersections of two different supporting curves by interval subdivision: every cell
-/// pair of parameter squares whose control boxes meet is either excluded after halving or holds, in a slightly
-/// enlarged box, exactly one zero (Krawczyk), contracted to a tiny box. Returns false (caller: exact path) when
-/// this does not settle everything: tangencies, overlaps, intersections at or near parameter 0 or 1, boxes of
-/// two cells that meet without a common proof, or a work budget exceeded.
-///
-/// Common end points C_A(e_a) = C_B(e_b), e_a, e_b in {0, 1} (exact comparison of the end control points) are
-/// `contacts`, exact intersections with rational parameters; a cell having one as a corner is settled when a
-/// direction v separates the two pieces strictly except at that point (v . (Q - P) < 0 for the other control
-/// points Q of one piece, > 0 for the other's: every other point of a piece is a positive combination of its
-/// control points), so that it holds no other intersection; otherwise it is halved.
-struct Arr_interval_solver {
-  const Arr_bezier_supporting_curve& A;
-  const Arr_bezier_supporting_curve& B;
-  std::vector<std::array<double, 4>> found;  // s_lo, s_hi, t_lo, t_hi
-  std::vector<std::array<int, 2>> contacts;  // (e_a, e_b)
-  int budget = 4000;
-  bool failed = false;
-  std::deque<std::array<Arr_interval_net, 5>> pool;  // (growing a deque keeps references)
-
-  /// Call with the whole nets on [0,1] x [0,1] and depth 0.
-  void run(const Arr_interval_net& na, double s0, double s1, const Arr_interval_net& nb, double t0, double t1, int depth) {
-    typename Arr_interval::Protector guard;
-    if (failed) return;
-    if (depth == 0) {
-      const std::size_t n = A.curve.number_of_control_points() - 1, m = B.curve.number_of_control_points() - 1;
-      for (int ea = 0; ea < 2; ++ea)
-        for (int eb = 0; eb < 2; ++eb)
-          if (A.curve.control_point(ea * n) == B.curve.control_point(eb * m)) contacts.push_back({ea, eb});
-    }
-    if (--budget < 0) {
-      failed = true;
-      return;
-    }
-    double ba[4], bb[4];
-    if (!arr_net_box(na, ba) || !arr_net_box(nb, bb)) {
-      failed = true;
-      return;
-    }
-    if (ba[1] < bb[0] || bb[1] < ba[0] || ba[3] < bb[2] || bb[3] < ba[2]) return;
-    int corners = 0, ia = 0, ib = 0;
-    for (const auto& c : contacts)
-      if ((c[0] == s0 || c[0] == s1) && (c[1] == t0 || c[1] == t1)) {
-        ++corners;
-        ia = c[0] == s0 ? 0 : int(na.size()) - 1;
-        ib = c[1] == t0 ? 0 : int(nb.size()) - 1;
-      }
-    if (corners == 1 && depth >= 1 && separated(na, ia, nb, ib)) return;
-    if (corners == 0 && depth >= 2) {
-      // enlarged cell: a zero on the cell boundary lies in its interior
-      const double es = 0.0625 * (s1 - s0), et = 0.0625 * (t1 - t0);
-      Arr_interval S(s0 - es, s1 + es), T(t0 - et, t1 + et);
-      if (arr_krawczyk(A, B, S, T, 16)) {
-        add(S, T);
-        return;
-      }
-    }
-    if (depth >= 24) {
-      failed = true;
-      return;
-    }
-    if (pool.size() <= std::size_t(depth)) pool.resize(depth + 1);  // one set of nets per depth: no allocation
-    auto& nets = pool[depth];
-    Arr_interval_net &al = nets[0], &ar = nets[1], &bl = nets[2], &br = nets[3];
-    arr_net_halves(na, al, ar, nets[4]);
-    arr_net_halves(nb, bl, br, nets[4]);
-    const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
-    run(al, s0, sm, bl, t0, tm, depth + 1);
-    run(al, s0, sm, br, tm, t1, depth + 1);
-    run(ar, sm, s1, bl, t0, tm, depth + 1);
-    run(ar, sm, s1, br, tm, t1, depth + 1);
-  }
-
-  /// The pieces na and nb meet only at their common end control points na[ia] = nb[ib] = P (see above).
-  static bool separated(const Arr_interval_net& na, int ia, const Arr_interval_net& nb, int ib) {
-    typedef Arr_interval I;
-    const I px = na[ia][1] / na[ia][0], py = na[ia][2] / na[ia][0];  // encloses P (exact end point)
-    const double cx = CGAL::to_double(px), cy = CGAL::to_double(py);
-    auto mean_direction = [&](const Arr_interval_net& q, int skip, double& ux, double& uy) {
-      ux = uy = 0;
-      for (int i = 0; i < int(q.size()); ++i)
-        if (i != skip) {
-          ux += CGAL::to_double(q[i][1] / q[i][0]) - cx;
-          uy += CGAL::to_double(q[i][2] / q[i][0]) - cy;
-        }
-      const double l = std::sqrt(ux * ux + uy * uy);
-      if (!(l > 0) || !std::isfinite(l)) return false;
-      ux /= l;
-      uy /= l;
-      return true;
-    };
-    double ax, ay, bx, by;
-    if (!mean_direction(na, ia, ax, ay) || !mean_direction(nb, ib, bx, by)) return false;
-    const I vx(bx - ax), vy(by - ay);
-    auto side = [&](const Arr_interval_net& q, int skip, int sign) {
-      for (int i = 0; i < int(q.size()); ++i) {
-        if (i == skip) continue;
-        const I d = vx * (q[i][1] / q[i][0] - px) + vy * (q[i][2] / q[i][0] - py);
-        if (sign < 0 ? !(d.sup() < 0) : !(d.inf() > 0)) return false;
-      }
-      return true;
-    };
-    return side(na, ia, -1) && side(nb, ib, 1);
-  }
-
-  void add(const Arr_interval& S, const Arr_interval& T) {
-    // outside [0,1]^2: not an intersection of the arcs; straddling the border: undecided here
-    if (S.sup() < 0 || S.inf() > 1 || T.sup() < 0 || T.inf() > 1) return;
-    if (!(S.inf() > 0 && S.sup() < 1 && T.inf() > 0 && T.sup() < 1)) {
-      failed = true;
-      return;
-    }
-    for (auto& f : found) {
-      if (S.sup() < f[0] || f[1] < S.inf() || T.sup() < f[2] || f[3] < T.inf()) continue;
-      // the boxes meet: one zero if Krawczyk proves uniqueness on their hull
-      Arr_interval HS(std::min(S.inf(), f[0]), std::max(S.sup(), f[1])), HT(std::min(T.inf(), f[2]), std::max(T.sup(), f[3]));
-      const double es = HS.sup() - HS.inf(), et = HT.sup() - HT.inf();
-      HS = Arr_interval(HS.inf() - es, HS.sup() + es);
-      HT = Arr_interval(HT.inf() - et, HT.sup() + et);
-      if (!arr_krawczyk(A, B, HS, HT, 0)) failed = true;
-      return;
-    }
-    found.push_back({S.inf(), S.sup(), T.inf(), T.sup()});
-  }
-};
 
 /// Enclosures of F(S, T), dF/ds, dF/dt for a bivariate coefficient matrix f[p][q] (s^p t^q).
 inline void arr_eval_bivariate(const std::vector<std::vector<Arr_interval>>& f, const Arr_interval& S,
