@@ -189,3 +189,24 @@ TEST_CASE("planar lazy: numbers used without materialization", "[planar_lazy]") 
   CHECK_FALSE(lazy.points[0].s.is_lazy());
   CHECK(m == -exact.points[0].s);
 }
+
+TEST_CASE("planar lazy: two arcs of one nodal cubic (eliminants vanish identically)", "[planar_lazy]") {
+  // C(u) = (t^2 - 1, t^3 - t), t = 3u - 3/2, node (0,0) at t = -1, 1, i.e. u = 1/6, 5/6. A = C on [0, 9/20],
+  // B = C on [11/20, 1]: both arcs lie on the nodal cubic y^2 = x^2 (x + 1), so R(s) and T(t) vanish identically;
+  // they cross only at the node: s = (1/6) / (9/20) = 10/27, t = (5/6 - 11/20) / (9/20) = 17/27.
+  using Pt = Rational_bezier_curve_2<Rational>::Point;
+  const Rational_bezier_curve_2<Rational> full(std::vector<Pt>{Pt{Rational(5, 4), Rational(-15, 8)},
+                                                               Pt{Rational(-7, 4), Rational(31, 8)},
+                                                               Pt{Rational(-7, 4), Rational(-31, 8)},
+                                                               Pt{Rational(5, 4), Rational(15, 8)}});
+  const auto A = full.split(Rational(9, 20)).first, B = full.split(Rational(11, 20)).second;
+  const auto r = intersect_curves(A, B);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.overlaps.empty());
+  CHECK(r.points[0].s.is_lazy());
+  CHECK(r.points[0].kind == Curve_intersection_kind::transversal);
+  // materialization falls back to the exact (subresultant) intersection inside the box
+  CHECK(r.points[0].s.is_rational());
+  CHECK(r.points[0].s.rational_value() == Rational(10, 27));
+  CHECK(r.points[0].t.rational_value() == Rational(17, 27));
+}
