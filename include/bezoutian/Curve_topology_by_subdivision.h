@@ -48,9 +48,11 @@
 #include <bezoutian/Curve_topology.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/Root_isolation.h>
+#include <bezoutian/internal/double_bernstein_grid.h>
 #include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/number_types.h>
 
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Polynomial.h>
 
 #include <mpfi.h>
@@ -127,19 +129,6 @@ class Interval_grid {
   std::unique_ptr<__mpfi_struct[]> v_;
 };
 
-// +1 / -1 if every interval of the list is strictly positive / negative, 0 otherwise.
-template <class Get>
-int common_sign(int n, Get get) {
-  int s = 0;
-  for (int k = 0; k < n; ++k) {
-    mpfi_srcptr x = get(k);
-    const int t = mpfi_is_strictly_pos(x) ? 1 : (mpfi_is_strictly_neg(x) ? -1 : 0);
-    if (t == 0 || (s != 0 && t != s)) return 0;
-    s = t;
-  }
-  return s;
-}
-
 class Subdivision_topology {
  public:
   Subdivision_topology(const Polynomial_2<Integer>& D, const Parameter_box& box, const Subdivision_topology_options& o)
@@ -170,20 +159,38 @@ class Subdivision_topology {
 
   Subdivision_topology_result run() {
     Subdivision_topology_result res;
-    Box root{box_.u0, box_.u1, box_.v0, box_.v1, 0, std::make_shared<Interval_grid>(a_, b_, prec_)};
-    bernstein_on_box(*root.grid);
+    root_grid_ = std::make_shared<Interval_grid>(a_, b_, prec_);
+    bernstein_on_box(*root_grid_);
+    Box root{box_.u0, box_.u1, box_.v0, box_.v1, 0, root_grid_, nullptr};
+    root.fast = double_grid_of(*root_grid_);
     std::vector<Box> stack{root};
+    const double split_work = double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_);
     while (!stack.empty()) {
       Box B = stack.back();
       stack.pop_back();
-      if (++res.boxes > o_.max_boxes ||
-          double(res.boxes) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) > o_.max_work) {
+      // budget: an MPFI grid operation counts 1, a double one 1/16 (their measured cost ratio is about 20)
+      work_ += split_work / 16;
+      if (++res.boxes > o_.max_boxes || work_ > o_.max_work) {
         res.reason = "the subdivision budget was exhausted after " + std::to_string(res.boxes - 1) + " boxes";
         return res;
       }
-      const Interval_grid& g = *B.grid;
-      const int n = int(g.size());
-      if (common_sign(n, [&](int k) { return g.at(k / (b_ + 1), k % (b_ + 1)); }) != 0) continue;  // excluded
+      // Sign tests on the double grid (proved radius); when they decide nothing and the radius has grown large
+      // against the coefficients (deep boxes near the curve), the grid is recomputed from the exact-rounded
+      // MPFI grid of the domain and the tests repeated.
+      int excluded = B.fast->common_sign(B.fast->radius());
+      bool dv = false, du = false;
+      for (int attempt = 0; excluded == 0; ++attempt) {
+        dv = b_ >= 1 && B.fast->difference_sign(false, B.fast->radius()) != 0;
+        du = a_ >= 1 && B.fast->difference_sign(true, B.fast->radius()) != 0;
+        if (dv || du || attempt > 0 || B.grid || B.fast->precise()) break;
+        // recompute only if the midpoints would decide (or the radius is so large that they mean little)
+        if (B.fast->radius() <= std::ldexp(B.fast->max_abs(), -12) && B.fast->common_sign(0) == 0 &&
+            (b_ < 1 || B.fast->difference_sign(false, 0) == 0) && (a_ < 1 || B.fast->difference_sign(true, 0) == 0))
+          break;
+        B.fast = double_grid_of(mpfi_grid(B));
+        excluded = B.fast->common_sign(B.fast->radius());
+      }
+      if (excluded != 0) continue;
       // a box proved free of genuine points is not analysed (also a simple one: its phantom arcs are dropped, so
       // that a locus without genuine points comes out empty)
       if (o_.no_genuine_points && B.depth >= o_.genuine_test_depth &&
@@ -193,8 +200,6 @@ class Subdivision_topology {
         res.reason = failure_;
         return res;
       }
-      const bool dv = b_ >= 1 && difference_sign(g, false) != 0;
-      const bool du = a_ >= 1 && difference_sign(g, true) != 0;
       if ((dv || du) && resolve(B, dv)) continue;
       if (!failed_ && B.depth >= o_.singular_analysis_depth && resolve_singular(B)) continue;
       if (failed_) {
@@ -219,10 +224,12 @@ class Subdivision_topology {
   }
 
  private:
+  // A sub-box with its Bernstein coefficients: always the double grid; the MPFI grid only once needed.
   struct Box {
     Rational u0, u1, v0, v1;
     int depth;
-    std::shared_ptr<Interval_grid> grid;
+    std::shared_ptr<Interval_grid> grid;                // may be null
+    std::shared_ptr<const Double_bernstein_grid> fast;  // never null
   };
   // A crossing of D = 0 with a line: vertical (u = c) or horizontal (v = c), root index on that line.
   struct Node_key {
@@ -244,25 +251,6 @@ class Subdivision_topology {
   struct Line {
     std::vector<Isolated_root> roots;  // on the whole domain range of the other variable
   };
-
-  // Sign of all forward differences along u (du) or v: the Bernstein coefficients of dD/du (dD/dv) up to a
-  // positive factor.
-  int difference_sign(const Interval_grid& g, bool along_u) const {
-    mpfi_t d;
-    mpfi_init2(d, prec_);
-    int s = 0;
-    bool ok = true;
-    for (int i = 0; i <= a_ && ok; ++i)
-      for (int j = 0; j <= b_ && ok; ++j) {
-        if (along_u ? i == a_ : j == b_) continue;
-        mpfi_sub(d, along_u ? g.at(i + 1, j) : g.at(i, j + 1), g.at(i, j));
-        const int t = mpfi_is_strictly_pos(d) ? 1 : (mpfi_is_strictly_neg(d) ? -1 : 0);
-        if (t == 0 || (s != 0 && t != s)) ok = false;
-        s = t;
-      }
-    mpfi_clear(d);
-    return ok ? s : 0;
-  }
 
   // Bernstein coefficients of D on the root box: shift and scale the power form (interval Taylor shifts), then
   // b_kl = sum_{i<=k, j<=l} C(k,i) C(l,j) / (C(a,i) C(b,j)) e_ij.
@@ -338,14 +326,15 @@ class Subdivision_topology {
     mpfi_clear(t);
   }
 
-  // de Casteljau at ratio r along u (or v): left/right children.
-  void split_grid(const Interval_grid& g, bool along_u, Interval_grid& left, Interval_grid& right) const {
+  // de Casteljau at ratio `ratio` in (0,1) along u (or v): left/right children.
+  void split_grid(const Interval_grid& g, bool along_u, const Rational& ratio, Interval_grid& left,
+                  Interval_grid& right) const {
     const int n = along_u ? a_ : b_, m = along_u ? b_ : a_;
     mpfi_t r, s, t;
     mpfi_init2(r, prec_);
     mpfi_init2(s, prec_);
     mpfi_init2(t, prec_);
-    mpfi_set_q(r, ratio(along_u).mpq());
+    mpfi_set_q(r, ratio.mpq());
     mpfi_ui_sub(s, 1, r);
     std::vector<__mpfi_struct> w(std::size_t(n + 1));
     for (auto& x : w) mpfi_init2(&x, prec_);
@@ -375,19 +364,88 @@ class Subdivision_topology {
   // dyadic point (symmetric data puts curve features there).
   static Rational ratio(bool along_u) { return along_u ? Rational(15, 31) : Rational(16, 33); }
 
+  // The four children (double grids only; their MPFI grids are extracted from the domain's when needed).
   void split(const Box& B, std::vector<Box>& stack) const {
     const Rational um = B.u0 + (B.u1 - B.u0) * ratio(true), vm = B.v0 + (B.v1 - B.v0) * ratio(false);
-    auto L = std::make_shared<Interval_grid>(a_, b_, prec_), R = std::make_shared<Interval_grid>(a_, b_, prec_);
-    split_grid(*B.grid, true, *L, *R);
+    Double_bernstein_grid L, R;
+    B.fast->split(true, CGAL::to_double(ratio(true)), L, R);
     for (int side = 0; side < 2; ++side) {
-      const auto& half = side == 0 ? L : R;
-      auto lo = std::make_shared<Interval_grid>(a_, b_, prec_), hi = std::make_shared<Interval_grid>(a_, b_, prec_);
-      split_grid(*half, false, *lo, *hi);
+      auto lo = std::make_shared<Double_bernstein_grid>(), hi = std::make_shared<Double_bernstein_grid>();
+      (side == 0 ? L : R).split(false, CGAL::to_double(ratio(false)), *lo, *hi);
       const Rational& u0 = side == 0 ? B.u0 : um;
       const Rational& u1 = side == 0 ? um : B.u1;
-      stack.push_back(Box{u0, u1, B.v0, vm, B.depth + 1, lo});
-      stack.push_back(Box{u0, u1, vm, B.v1, B.depth + 1, hi});
+      stack.push_back(Box{u0, u1, B.v0, vm, B.depth + 1, nullptr, lo});
+      stack.push_back(Box{u0, u1, vm, B.v1, B.depth + 1, nullptr, hi});
     }
+  }
+
+  // The MPFI grid of B (cached in B): the domain's grid restricted to B by de Casteljau at the rational ratios
+  // of B's edges (convex combinations: the widths stay at the working precision).
+  const Interval_grid& mpfi_grid(Box& B) {
+    if (B.grid) return *B.grid;
+    work_ += 4 * double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_);
+    auto g = std::make_shared<Interval_grid>(a_, b_, prec_);
+    for (std::size_t k = 0; k < g->size(); ++k) mpfi_set(g->at(int(k / (b_ + 1)), int(k % (b_ + 1))),
+                                                       root_grid_->at(int(k / (b_ + 1)), int(k % (b_ + 1))));
+    Interval_grid left(a_, b_, prec_), right(a_, b_, prec_);
+    for (int pass = 0; pass < 2; ++pass) {
+      const bool along_u = pass == 0;
+      const Rational& D0 = along_u ? box_.u0 : box_.v0;
+      const Rational W = along_u ? box_.u1 - box_.u0 : box_.v1 - box_.v0;
+      const Rational lo = ((along_u ? B.u0 : B.v0) - D0) / W, hi = ((along_u ? B.u1 : B.v1) - D0) / W;
+      if (hi < Rational(1)) {  // keep [0, hi]
+        split_grid(*g, along_u, hi, left, right);
+        copy_grid(left, *g);
+      }
+      if (lo > Rational(0)) {  // then [lo/hi, 1] of that
+        split_grid(*g, along_u, lo / hi, left, right);
+        copy_grid(right, *g);
+      }
+    }
+    B.grid = g;
+    return *g;
+  }
+  static void copy_grid(const Interval_grid& from, Interval_grid& to) {
+    for (int i = 0; i <= from.a(); ++i)
+      for (int j = 0; j <= from.b(); ++j) mpfi_set(to.at(i, j), from.at(i, j));
+  }
+
+  // Double grid of an MPFI grid: midpoints rounded to nearest, scaled by one power of two, and the largest
+  // distance from a midpoint to its interval's ends rounded upwards.
+  std::shared_ptr<const Double_bernstein_grid> double_grid_of(const Interval_grid& g) const {
+    auto f = std::make_shared<Double_bernstein_grid>(a_, b_);
+    mpfr_t mid, d;
+    mpfr_init2(mid, prec_);
+    mpfr_init2(d, prec_);
+    long emax = LONG_MIN;
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        mpfi_mid(mid, g.at(i, j));
+        if (!mpfr_zero_p(mid)) emax = std::max(emax, long(mpfr_get_exp(mid)));
+        if (!mpfr_zero_p(&g.at(i, j)->right)) emax = std::max(emax, long(mpfr_get_exp(&g.at(i, j)->right)));
+        if (!mpfr_zero_p(&g.at(i, j)->left)) emax = std::max(emax, long(mpfr_get_exp(&g.at(i, j)->left)));
+      }
+    if (emax == LONG_MIN) emax = 0;
+    double rho = 0;
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        mpfi_mid(mid, g.at(i, j));
+        mpfr_mul_2si(mid, mid, -emax, MPFR_RNDN);
+        const double m = mpfr_get_d(mid, MPFR_RNDN);
+        f->at(i, j) = m;
+        // radius: max(right - m, m - left) in the scaled units, rounded up
+        mpfr_mul_2si(d, &g.at(i, j)->right, -emax, MPFR_RNDU);
+        mpfr_sub_d(d, d, m, MPFR_RNDU);
+        rho = std::max(rho, mpfr_get_d(d, MPFR_RNDU));
+        mpfr_mul_2si(d, &g.at(i, j)->left, -emax, MPFR_RNDD);
+        mpfr_d_sub(d, m, d, MPFR_RNDU);
+        rho = std::max(rho, mpfr_get_d(d, MPFR_RNDU));
+      }
+    mpfr_clear(mid);
+    mpfr_clear(d);
+    f->set_radius(rho);
+    f->rescale();
+    return f;
   }
 
   // Exact roots of D on the line u = c (vertical) or v = c, over the domain range of the other variable.
@@ -637,28 +695,6 @@ class Subdivision_topology {
     mpfi_clear(y1);
     return r;
   }
-  // Long double copy of the grid's midpoints, scaled by a power of two (for Newton's method only).
-  std::vector<long double> long_double_grid(const Interval_grid& g) const {
-    mpfr_t m;
-    mpfr_init2(m, prec_);
-    long emax = LONG_MIN;
-    for (int i = 0; i <= a_; ++i)
-      for (int j = 0; j <= b_; ++j) {
-        mpfi_mid(m, g.at(i, j));
-        if (!mpfr_zero_p(m)) emax = std::max(emax, long(mpfr_get_exp(m)));
-      }
-    std::vector<long double> out(g.size(), 0.0L);
-    if (emax != LONG_MIN)
-      for (int i = 0; i <= a_; ++i)
-        for (int j = 0; j <= b_; ++j) {
-          mpfi_mid(m, g.at(i, j));
-          mpfr_mul_2si(m, m, -emax, MPFR_RNDN);
-          out[std::size_t(i) * (b_ + 1) + j] = mpfr_get_ld(m, MPFR_RNDN);
-        }
-    mpfr_clear(m);
-    return out;
-  }
-
   // Value and derivatives up to order 2 of the long double grid at (x, y): f, fx, fy, fxx, fxy, fyy.
   std::array<long double, 6> local_jet(const std::vector<long double>& L, long double x, long double y) const {
     // Bernstein basis values and first/second derivatives in each variable
@@ -751,18 +787,33 @@ class Subdivision_topology {
   // Resolves box B around a nondegenerate singular or isolated point of D = 0 (conditions (1)-(4) of the header
   // comment). Returns false (B is then split) when a condition fails for a reason that splitting can cure;
   // calls fail() when D(p) = 0 can be neither proved nor excluded.
-  bool resolve_singular(const Box& B) {
+  bool resolve_singular(Box& B) {
     using I = Mpfi_interval;
-    const Interval_grid& g = *B.grid;
     if (a_ + b_ < 2) return false;
-    // (1) regular Hessian on B
-    // the two D_uv entries are independent copies: the mean-value Jacobian takes its rows at different points
-    const I hxx = hessian_range(g, 0), hxy = hessian_range(g, 1), hyx = hxy, hyy = hessian_range(g, 2);
-    const I det = hxx * hyy - hxy * hyx;
-    if (det.contains_zero()) return false;
-    const bool extremum = det.positive();
+    // (1) regular Hessian on B; the two D_uv entries are independent copies (the mean-value Jacobian takes its
+    // rows at different points). First on the double grid (its ranges are proved enclosures); if that fails
+    // while its radius is small, the MPFI grid would not decide either and B is split.
+    auto hessian_sign = [&](double rho) {  // sign of det H on B, 0 if not proved
+      using DI = CGAL::Interval_nt<>;
+      double lo[3], hi[3];
+      for (int k = 0; k < 3; ++k) B.fast->second_difference_range(k, rho, lo[k], hi[k]);
+      const DI det = DI(lo[0], hi[0]) * DI(lo[2], hi[2]) - DI(lo[1], hi[1]) * DI(lo[1], hi[1]);
+      return det.inf() > 0 ? 1 : (det.sup() < 0 ? -1 : 0);
+    };
+    int hessian = hessian_sign(B.fast->radius());
+    if (hessian == 0 && (B.fast->precise() || hessian_sign(0) == 0)) return false;
+    if (hessian == 0) {
+      const Interval_grid& g = mpfi_grid(B);
+      const I hxx = hessian_range(g, 0), hxy = hessian_range(g, 1), hyx = hxy, hyy = hessian_range(g, 2);
+      const I det = hxx * hyy - hxy * hyx;
+      if (det.contains_zero()) return false;
+      hessian = det.positive() ? 1 : -1;
+    }
+    const bool extremum = hessian > 0;
     // floating-point Newton for the critical point (a starting point only)
-    const std::vector<long double> L = long_double_grid(g);
+    std::vector<long double> L(std::size_t(a_ + 1) * (b_ + 1));
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) L[std::size_t(i) * (b_ + 1) + j] = B.fast->at(i, j);
     long double x = 0.5L, y = 0.5L;
     for (int it = 0; it < 60; ++it) {
       const auto j = local_jet(L, x, y);
@@ -781,6 +832,9 @@ class Subdivision_topology {
                                        CGAL::to_double(B.v0) + double(y) * CGAL::to_double(wv)};
     for (const auto& e : off_curve_)  // a critical point already proved to lie off the curve
       if (e.contains(approx[0], approx[1])) return false;
+    if (o_.no_genuine_points && B.depth < undecided_depth)  // D(p) = 0 already neither proved nor excluded
+      for (const auto& e : undecided_)
+        if (e.contains(approx[0], approx[1])) return false;
     // (4) the crossings with the edges of B
     std::vector<Crossing> cr;
     if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
@@ -793,6 +847,7 @@ class Subdivision_topology {
           return false;
     if (cr.size() != (extremum ? 0u : 4u)) return false;
     // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B
+    const Interval_grid& g = mpfi_grid(B);
     const double r0 = 1e-7;
     std::array<I, 2> X{I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
                        I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
@@ -837,7 +892,10 @@ class Subdivision_topology {
     }
     if (!zero_proved && o_.singular_point_witness)
       zero_proved = o_.singular_point_witness(Parameter_box{B.u0, B.u1, B.v0, B.v1}, approx);
-    if (!zero_proved && o_.no_genuine_points && B.depth < 16) return false;  // it may yet be excluded as phantom
+    if (!zero_proved && o_.no_genuine_points && B.depth < undecided_depth) {  // it may yet be excluded as phantom
+      undecided_.push_back(K);
+      return false;
+    }
     if (!zero_proved) {
       fail("D has a nondegenerate critical point at (" + std::to_string(approx[0]) + ", " + std::to_string(approx[1]) +
            ") where |D| is below the interval resolution; D = 0 there (a node or an isolated point) could not be "
@@ -880,25 +938,34 @@ class Subdivision_topology {
     return nodes_[k] = keys_.size() - 1;
   }
 
-  long double eval(long double u, long double v) const {
-    long double r = 0;
-    for (int i = a_; i >= 0; --i) {
-      long double c = 0;
-      for (int j = b_; j >= 0; --j) c = c * v + scaled_[std::size_t(i) * (b_ + 1) + j];
-      r = r * u + c;
-    }
-    return r;
-  }
-
   // Floating-point samples strictly between the two ends: the unique crossing of the segment u = const
   // (v = const) with the curve, by bisection.
   void sample_arc(const Box& B, bool by_u, const Algebraic_real& p0, const Algebraic_real& p1,
                   std::vector<std::array<double, 2>>& out) const {
     const double x0 = p0.to_double(), x1 = p1.to_double();
     const long double lo = CGAL::to_double(by_u ? B.v0 : B.u0), hi = CGAL::to_double(by_u ? B.v1 : B.u1);
+    std::vector<long double> c;  // D on the segment: a polynomial in the other variable
     for (int k = 1; k < o_.samples_per_arc; ++k) {
       const long double x = x0 + (x1 - x0) * (long double)k / o_.samples_per_arc;
-      auto f = [&](long double y) { return by_u ? eval(x, y) : eval(y, x); };
+      c.assign(std::size_t(by_u ? b_ + 1 : a_ + 1), 0.0L);
+      if (by_u) {  // c_j = sum_i D_ij x^i
+        for (int j = 0; j <= b_; ++j) {
+          long double t = 0;
+          for (int i = a_; i >= 0; --i) t = t * x + scaled_[std::size_t(i) * (b_ + 1) + j];
+          c[std::size_t(j)] = t;
+        }
+      } else {  // c_i = sum_j D_ij x^j
+        for (int i = 0; i <= a_; ++i) {
+          long double t = 0;
+          for (int j = b_; j >= 0; --j) t = t * x + scaled_[std::size_t(i) * (b_ + 1) + j];
+          c[std::size_t(i)] = t;
+        }
+      }
+      auto f = [&](long double y) {
+        long double r = 0;
+        for (std::size_t k2 = c.size(); k2-- > 0;) r = r * y + c[k2];
+        return r;
+      };
       long double a = lo, b = hi, fa = f(a);
       for (int it = 0; it < 64; ++it) {
         const long double m = 0.5L * (a + b), fm = f(m);
@@ -1058,6 +1125,8 @@ class Subdivision_topology {
   int a_ = 0, b_ = 0;
   long bits_ = 0;
   mpfr_prec_t prec_ = 256, root_prec_ = 256;
+  std::shared_ptr<Interval_grid> root_grid_;  // Bernstein coefficients on the whole domain box
+  double work_ = 0;                           // budget used (see run())
   std::vector<long double> scaled_;
   std::map<std::pair<bool, Rational>, Line> lines_;
   std::map<Node_key, std::size_t> nodes_;
@@ -1065,6 +1134,8 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
+  std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)
+  static constexpr int undecided_depth = 16;  // below it such a point waits for the phantom exclusion
   std::set<std::size_t> cut_;             // nodes on the edges of excised boxes
   std::vector<Parameter_box> excised_;
   bool failed_ = false;

@@ -190,12 +190,36 @@ class Rational_bezier_patch {
 
   /// Floating-point point Phi(u,v).
   std::array<double, 3> evaluate(double u, double v) const {
-    std::array<double, 4> h{};
-    for (int k = 0; k < 4; ++k) {
-      std::vector<double> col;
-      for (const auto& row : dnet_[k]) col.push_back(de_casteljau_value(row, v));
-      h[k] = de_casteljau_value(col, u);
+    // sum_ij B_i(u) B_j(v) h_ij with the Bernstein values from their recurrence (stable, no allocation for
+    // degrees below 32: this is the inner loop of the floating-point lifting)
+    const std::size_t m1 = dnet_[0].size(), n1 = m1 ? dnet_[0][0].size() : 0;
+    if (m1 > 32 || n1 > 32) {
+      std::array<double, 4> h{};
+      for (int k = 0; k < 4; ++k) {
+        std::vector<double> col;
+        for (const auto& row : dnet_[k]) col.push_back(de_casteljau_value(row, v));
+        h[k] = de_casteljau_value(col, u);
+      }
+      return {h[1] / h[0], h[2] / h[0], h[3] / h[0]};
     }
+    double bu[32], bv[32];
+    auto basis = [](std::size_t n1, double t, double* b) {
+      b[0] = 1;
+      for (std::size_t d = 1; d < n1; ++d) {
+        b[d] = t * b[d - 1];
+        for (std::size_t i = d - 1; i >= 1; --i) b[i] = (1 - t) * b[i] + t * b[i - 1];
+        b[0] *= 1 - t;
+      }
+    };
+    basis(m1, u, bu);
+    basis(n1, v, bv);
+    std::array<double, 4> h{};
+    for (int k = 0; k < 4; ++k)
+      for (std::size_t i = 0; i < m1; ++i) {
+        double r = 0;
+        for (std::size_t j = 0; j < n1; ++j) r += dnet_[k][i][j] * bv[j];
+        h[k] += bu[i] * r;
+      }
     return {h[1] / h[0], h[2] / h[0], h[3] / h[0]};
   }
 

@@ -313,9 +313,7 @@ inline Surface_intersection_options with_partner_proofs(const Surface_intersecti
     };
   if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
     const Parameter_box domain = o.partner_domain;
-    ow.subdivision.no_genuine_points = [eq, domain](const Parameter_box& b) {
-      return no_genuine_partner(eq, b, domain);
-    };
+    ow.subdivision.no_genuine_points = Genuine_point_exclusion(eq, domain);
   }
   return ow;
 }

@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace bezoutian {
@@ -633,20 +634,41 @@ inline bool prove_double_partner_point(const Partner_equations& eq, const Parame
 /// box x piece, or (self-intersection, a piece near y = 0) the interval Jacobian dE/dy must have full rank on the
 /// hull H of the piece and 0: E(x; y) = M y with M a mean value of dE/dy on the segment [0, y] inside H
 /// (E(x; 0) = 0), so y = 0 is the only zero there (the trivial partner). False means "not proved".
+/// `start` (optional): pieces known to cover every candidate partner of the points of `box` (those that survived
+/// the test on a box containing it); on failure `survivors` (optional) receives pieces covering every candidate
+/// partner not excluded.
 inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box& box, const Parameter_box& domain,
-                               int max_pieces = 1024) {
+                               int max_pieces = 1024, const std::vector<std::array<Double_interval, 2>>* start = nullptr,
+                               std::vector<std::array<Double_interval, 2>>* survivors = nullptr) {
   using D = Double_interval;
   const D x1 = D::hull(box.u0, box.u1), x2 = D::hull(box.v0, box.v1);
-  std::vector<std::array<D, 2>> stack;
+  std::array<D, 2> range;
   if (eq.self_intersection())  // l: u + l in [d.u0, d.u1]; k: v + k in [d.v0, d.v1]
-    stack.push_back({D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)});
+    range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
   else  // (v, s) in the domain
-    stack.push_back({D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)});
+    range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
+  std::vector<std::array<D, 2>> stack;
+  if (!start) {
+    stack.push_back(range);
+  } else {  // the pieces clipped to this box's range (a smaller box has a smaller partner range)
+    for (const auto& y : *start) {
+      const std::array<D, 2> c{D{std::max(y[0].lo, range[0].lo), std::min(y[0].hi, range[0].hi)},
+                               D{std::max(y[1].lo, range[1].lo), std::min(y[1].hi, range[1].hi)}};
+      if (c[0].lo <= c[0].hi && c[1].lo <= c[1].hi) stack.push_back(c);
+    }
+  }
   int pieces = 0;
+  auto give_up = [&](const std::array<D, 2>& current) {
+    if (survivors) {
+      *survivors = stack;
+      survivors->push_back(current);
+    }
+    return false;
+  };
   while (!stack.empty()) {
     const std::array<D, 2> y = stack.back();
     stack.pop_back();
-    if (++pieces > max_pieces) return false;
+    if (++pieces > max_pieces) return give_up(y);
     std::array<D, 3> E;
     eq.evaluate({x1, x2, y[0], y[1]}, E);
     if (!E[0].contains_zero() || !E[1].contains_zero() || !E[2].contains_zero()) continue;
@@ -687,12 +709,46 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
     std::array<D, 2> lo = y, hi = y;
     lo[i].hi = m;
     hi[i].lo = m;
-    if (!(lo[i].lo < m && m < hi[i].hi)) return false;  // cannot split further
+    if (!(lo[i].lo < m && m < hi[i].hi)) return give_up(y);  // cannot split further
     stack.push_back(lo);
     stack.push_back(hi);
   }
   return true;
 }
+
+/// The phantom exclusion as used by the subdivision (Subdivision_topology_options::no_genuine_points): boxes are
+/// asked from the root down, so the pieces that survived on a box are remembered and the test on a sub-box
+/// starts from them instead of the whole partner range (copies share the memory).
+class Genuine_point_exclusion {
+ public:
+  Genuine_point_exclusion(Partner_equations eq, const Parameter_box& domain)
+      : eq_(std::move(eq)), domain_(domain), memory_(std::make_shared<std::vector<Entry>>()) {}
+  bool operator()(const Parameter_box& box) const {
+    const Entry* parent = nullptr;
+    for (const Entry& e : *memory_)  // the smallest remembered box containing `box`
+      if (e.box.u0 <= box.u0 && box.u1 <= e.box.u1 && e.box.v0 <= box.v0 && box.v1 <= e.box.v1 &&
+          (!parent || (e.box.u1 - e.box.u0) * (e.box.v1 - e.box.v0) <
+                          (parent->box.u1 - parent->box.u0) * (parent->box.v1 - parent->box.v0)))
+        parent = &e;
+    Entry next{box, {}};
+    if (no_genuine_partner(eq_, box, domain_, 1024, parent ? &parent->pieces : nullptr, &next.pieces)) return true;
+    if (next.pieces.size() <= max_remembered_pieces) {
+      if (memory_->size() >= max_entries) memory_->erase(memory_->begin());
+      memory_->push_back(std::move(next));
+    }
+    return false;
+  }
+
+ private:
+  struct Entry {
+    Parameter_box box;
+    std::vector<std::array<Double_interval, 2>> pieces;
+  };
+  static constexpr std::size_t max_entries = 64, max_remembered_pieces = 4096;
+  Partner_equations eq_;
+  Parameter_box domain_;
+  std::shared_ptr<std::vector<Entry>> memory_;
+};
 
 } // namespace internal
 } // namespace bezoutian
