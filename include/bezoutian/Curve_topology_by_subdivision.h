@@ -444,6 +444,7 @@ class Subdivision_topology {
     mpfr_clear(mid);
     mpfr_clear(d);
     f->set_radius(rho);
+    f->set_exponent(int(emax));
     f->rescale();
     return f;
   }

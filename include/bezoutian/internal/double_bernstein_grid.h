@@ -1,5 +1,5 @@
 // Bivariate Bernstein coefficients in double precision with ONE proved radius: the exact coefficient (i, j) lies
-// in [m_ij - rho, m_ij + rho] (up to a common power-of-two scale, which no sign decision depends on). This is the
+// in 2^e [m_ij - rho, m_ij + rho] (e = exponent(), a common power-of-two scale that no sign decision depends on). This is the
 // fast path of the subdivision in Curve_topology_by_subdivision.h: a de Casteljau split costs three flops per
 // coefficient and level in plain double arithmetic instead of MPFI operations, and the error it adds is bounded
 // a priori, so the exclusion and monotonicity tests stay proofs.
@@ -36,6 +36,9 @@ class Double_bernstein_grid {
   double at(int i, int j) const { return m_[std::size_t(i) * (b_ + 1) + j]; }
   double radius() const { return rho_; }
   void set_radius(double r) { rho_ = r; }
+  /// The exact coefficients are 2^exponent() (m_ij +- radius()).
+  int exponent() const { return e_; }
+  void set_exponent(int e) { e_ = e; }
   /// True when the radius is small against the largest coefficient (the decisions are then as sharp as an
   /// exact-rounded grid would give): rho <= 2^-30 max |m|.
   bool precise() const { return rho_ <= std::ldexp(max_abs(), -30); }
@@ -133,6 +136,7 @@ class Double_bernstein_grid {
     const double added = n * (6 * u * M * growth + 3 * eta);
     const double rho = (rho_ + added) * (1 + 1e-12);
     left.rho_ = right.rho_ = rho;
+    left.e_ = right.e_ = e_;
     left.rescale();
     right.rescale();
   }
@@ -145,6 +149,7 @@ class Double_bernstein_grid {
     std::frexp(M, &e);
     if (e == 0) return;
     for (double& x : m_) x = std::ldexp(x, -e);  // exact unless a tiny value underflows (error <= eta)
+    e_ += e;
     const double r = std::ldexp(rho_, -e);
     rho_ = e > 0 ? std::nextafter(r + std::ldexp(1.0, -1074), 1.0) : r;
   }
@@ -153,6 +158,7 @@ class Double_bernstein_grid {
   int a_ = 0, b_ = 0;
   std::vector<double> m_;
   double rho_ = 0;
+  int e_ = 0;
 };
 
 }  // namespace internal
