@@ -92,8 +92,9 @@ class Partner_equations {
     init(phi, psi);
   }
   bool self_intersection() const { return self_; }
-  /// A bound on the degree of E in y1 and in y2.
-  int degree_bound() const { return degree_bound_; }
+  /// Bounds on the degree of E in y1 and in y2 (self-intersection: y1 = l moves Q along u, y2 = k moves P along
+  /// v; intersection: y1 = v on phi, y2 = s on psi).
+  std::array<int, 2> degree_bounds() const { return degree_bounds_; }
   /// The weights A_0(P), B_0(Q) at z (double).
   std::array<std::complex<double>, 2> weights(const std::array<std::complex<double>, 4>& z) const {
     std::array<std::complex<double>, 2> P, Q;
@@ -219,7 +220,8 @@ class Partner_equations {
   };
   void init(const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>& psi) {
     const auto pa = phi.power_form(), pb = psi.power_form();
-    degree_bound_ = std::max(std::max(phi.degree_u(), phi.degree_v()), std::max(psi.degree_u(), psi.degree_v()));
+    degree_bounds_ = self_ ? std::array<int, 2>{phi.degree_u(), phi.degree_v()}
+                           : std::array<int, 2>{phi.degree_v(), psi.degree_u()};
     for (int k = 0; k < 4; ++k) {
       A_[k] = make_form(pa[k]);
       B_[k] = make_form(pb[k]);
@@ -298,7 +300,7 @@ class Partner_equations {
   }
 
   bool self_;
-  int degree_bound_ = 0;
+  std::array<int, 2> degree_bounds_{0, 0};
   std::array<Form, 4> A_, B_;
 };
 
@@ -343,9 +345,11 @@ inline std::vector<std::complex<double>> complex_roots(std::vector<std::complex<
 /// polished by Gauss-Newton on the three equations; distinct up to 1e-7, without the trivial partner (0, 0) of
 /// self-intersection.
 inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const Partner_equations& eq,
-                                                                        const std::array<double, 2>& x, int degree) {
+                                                                        const std::array<double, 2>& x) {
   using C = std::complex<double>;
-  const int d = degree;  // bound on the degree of E in y1 and in y2
+  // degree bounds in y1 and y2; the Sylvester matrix must use the true y2-degree bound (with a larger formal
+  // degree both leading coefficients vanish and the resultant is identically zero)
+  const int d1 = std::max(1, eq.degree_bounds()[0]), d = std::max(1, eq.degree_bounds()[1]);
   auto E_at = [&](C y1, C y2) {
     std::array<C, 3> E;
     std::array<std::array<C, 4>, 3> J;
@@ -388,8 +392,8 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
     }
     return det;
   };
-  // R(y1) has degree <= 2 d^2: values at N points of a circle of radius rho, inverse DFT
-  const int N = 2 * d * d + 1;
+  // R(y1) has degree <= 2 d1 d: values at N points of a circle of radius rho, inverse DFT
+  const int N = 2 * d1 * d + 1;
   std::vector<C> res_coeff;
   std::vector<std::array<C, 2>> out;
   for (double rho : {1.0, 2.0}) {
@@ -452,7 +456,7 @@ inline bool prove_double_partner_point(const Partner_equations& eq, const Parame
                                        const std::array<double, 2>& x) {
   using C = std::complex<double>;
   using I = Mpfi_interval;
-  const auto partners = numerical_partners(eq, x, eq.degree_bound());
+  const auto partners = numerical_partners(eq, x);
   // candidate pairs: two real partners, or one non-real partner (its conjugate is the other)
   std::vector<std::pair<std::array<C, 2>, std::array<C, 2>>> pairs;
   for (std::size_t a = 0; a < partners.size(); ++a) {
