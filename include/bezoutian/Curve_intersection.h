@@ -466,6 +466,9 @@ class Curve_intersection_engine {
       Planar_interval_solver solver{data->a, data->b, {}};
       solver.budget = 20000;  // cells; more than the arrangement's (a failure costs the exact path anyway)
       solver.max_depth = 34;  // power-basis enclosures of large coefficients can need cells below 2^-24
+      solver.mpfi_depth = 28;    // cells the doubles leave undecided that deep get the MPFI test
+      solver.mpfi_merge = true;  // boxes of one zero a few ulps wide: merged in MPFI
+      solver.mpfi_precision = mpfr_prec_t(192 + 2 * coefficient_bits_);
       solver.run(data->a.inet, 0, 1, data->b.inet, 0, 1, 0);
       CI_TICK("lazy interval solver");
       if (solver.failed || !solver.contacts.empty()) return false;

@@ -29,6 +29,7 @@ namespace internal {
 /// its homogeneous control net (w, wx, wy).
 struct Planar_interval_curve {
   Rational_bezier_curve_2<Rational> curve;
+  std::array<Polynomial_1<Integer>, 3> Hz;  // the integer power form itself (MPFI tests)
   std::array<std::vector<CGAL::Interval_nt<false>>, 3> Hd;
   std::vector<std::array<CGAL::Interval_nt<false>, 3>> inet;
 };
@@ -36,6 +37,7 @@ struct Planar_interval_curve {
 /// Fills the enclosures of `s` from s.curve and its integer power form H = (W, X, Y).
 inline void set_planar_interval_data(Planar_interval_curve& s, const std::array<Polynomial_1<Integer>, 3>& H) {
   typedef CGAL::Interval_nt<false> I;
+  s.Hz = H;
   for (int k = 0; k < 3; ++k) {
     s.Hd[k].clear();
     for (int i = 0; i <= std::max(0, H[k].degree()); ++i)
@@ -151,6 +153,96 @@ inline void planar_net_halves(const Planar_interval_net& q, Planar_interval_net&
   std::reverse(right.begin(), right.end());
 }
 
+/// Krawczyk's operator in MPFI at precision `prec` for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2
+/// (integer power forms) on the box X = S x T: K(X) = c - Y G(c) + (I - Y G'(X)) (X - c), c the midpoint, Y the
+/// inverse of the midpoint Jacobian. Every zero of G in X lies in K(X) (mean value form). False if Y or K is not
+/// finite.
+inline bool planar_krawczyk_operator(const std::array<Polynomial_1<Integer>, 3>& A,
+                                     const std::array<Polynomial_1<Integer>, 3>& B, const Mpfi_interval X[2],
+                                     Mpfi_interval K[2], mpfr_prec_t prec) {
+  using I = Mpfi_interval;
+  const I cs = X[0].midpoint(), ct = X[1].midpoint();
+  const Form_enclosure a(A, X[0]), b(B, X[1]), ac(A, cs), bc(B, ct);
+  I J[2][2] = {{I(prec), I(prec)}, {I(prec), I(prec)}};
+  I G[2] = {I(prec), I(prec)};
+  for (int k = 1; k <= 2; ++k) {
+    J[k - 1][0] = a.df[k] * b.f[0] - b.f[k] * a.df[0];
+    J[k - 1][1] = a.f[k] * b.df[0] - b.df[k] * a.f[0];
+    G[k - 1] = ac.f[k] * bc.f[0] - bc.f[k] * ac.f[0];
+  }
+  const double m00 = J[0][0].mid_double(), m01 = J[0][1].mid_double(), m10 = J[1][0].mid_double(),
+               m11 = J[1][1].mid_double();
+  const double det = m00 * m11 - m01 * m10;
+  if (!std::isfinite(det) || det == 0) return false;
+  const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
+  if (!std::isfinite(Y[0][0]) || !std::isfinite(Y[0][1]) || !std::isfinite(Y[1][0]) || !std::isfinite(Y[1][1]))
+    return false;
+  const I one = I::point(1, prec), zero = I::point(0, prec);
+  const I c[2] = {cs, ct};
+  const I d[2] = {X[0] - cs, X[1] - ct};
+  for (int i = 0; i < 2; ++i) {
+    const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
+    const I m0 = (i == 0 ? one : zero) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
+    const I m1 = (i == 1 ? one : zero) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
+    K[i] = c[i] - yg + m0 * d[0] + m1 * d[1];
+    if (!std::isfinite(K[i].width_double())) return false;
+  }
+  return true;
+}
+
+/// Krawczyk contraction in MPFI: X <- K(X) ∩ X, `rounds` times or until no progress (X keeps every zero it held).
+/// Returns false if K(X) ∩ X is empty or the operator is not finite (then the box is unchanged).
+/// box = (s_lo, s_hi, t_lo, t_hi), exact rationals. Stops early once both widths are <= stop_width or near the
+/// precision's resolution.
+inline bool planar_krawczyk_contract(const std::array<Polynomial_1<Integer>, 3>& A,
+                                     const std::array<Polynomial_1<Integer>, 3>& B, std::array<Rational, 4>& box,
+                                     mpfr_prec_t prec, int rounds, double stop_width = 0) {
+  using I = Mpfi_interval;
+  I X[2] = {I::hull(box[0], box[1], prec), I::hull(box[2], box[3], prec)};
+  const double floor_width = std::ldexp(1.0, 24 - int(prec));  // parameters lie in [-1, 2] or so
+  for (int round = 0; round < rounds; ++round) {
+    const double w0 = X[0].width_double(), w1 = X[1].width_double();
+    if ((w0 <= stop_width && w1 <= stop_width) || (w0 <= floor_width && w1 <= floor_width)) break;
+    I K[2] = {I(prec), I(prec)}, N[2] = {I(prec), I(prec)};
+    if (!planar_krawczyk_operator(A, B, X, K, prec)) return false;
+    bool progress = false;
+    for (int i = 0; i < 2; ++i) {
+      mpfi_intersect(N[i].get(), K[i].get(), X[i].get());
+      if (mpfi_is_empty(N[i].get())) return false;
+      if (N[i].width_double() < 0.75 * X[i].width_double()) progress = true;
+    }
+    X[0] = N[0];
+    X[1] = N[1];
+    if (!progress) break;
+  }
+  const Rational nb[4] = {X[0].lower(), X[0].upper(), X[1].lower(), X[1].upper()};
+  // keep the old ends where they are tighter (both boxes hold the zeros)
+  box[0] = std::max(box[0], nb[0]);
+  box[1] = std::min(box[1], nb[1]);
+  box[2] = std::max(box[2], nb[2]);
+  box[3] = std::min(box[3], nb[3]);
+  return true;
+}
+
+/// The MPFI form of planar_krawczyk, for cells where double evaluation is too coarse (power-basis coefficients
+/// that cancel): +1 if K(X) lies in the interior of X = S x T (exactly one zero, transversal; S, T are then
+/// contracted and rounded outwards to doubles), -1 if K(X) ∩ X = ∅ (no zero), 0 otherwise.
+inline int planar_krawczyk_mpfi(const std::array<Polynomial_1<Integer>, 3>& A,
+                                const std::array<Polynomial_1<Integer>, 3>& B, Planar_interval& S, Planar_interval& T,
+                                mpfr_prec_t prec) {
+  using I = Mpfi_interval;
+  std::array<Rational, 4> box{Rational(S.inf()), Rational(S.sup()), Rational(T.inf()), Rational(T.sup())};
+  const I X[2] = {I::hull(box[0], box[1], prec), I::hull(box[2], box[3], prec)};
+  I K[2] = {I(prec), I(prec)};
+  if (!planar_krawczyk_operator(A, B, X, K, prec)) return 0;
+  if (disjoint(K[0], X[0]) || disjoint(K[1], X[1])) return -1;
+  if (!(K[0].inside_open(box[0], box[1]) && K[1].inside_open(box[2], box[3]))) return 0;
+  planar_krawczyk_contract(A, B, box, prec, 8);
+  S = Planar_interval(CGAL::to_interval(box[0]).first, CGAL::to_interval(box[1]).second);
+  T = Planar_interval(CGAL::to_interval(box[2]).first, CGAL::to_interval(box[3]).second);
+  return 1;
+}
+
 /// Certified transversal intersections of two different supporting curves by interval subdivision: every cell
 /// pair of parameter squares whose control boxes meet is either excluded after halving or holds, in a slightly
 /// enlarged box, exactly one zero (Krawczyk), contracted to a tiny box. Returns false (caller: exact path) when
@@ -172,6 +264,11 @@ struct Planar_interval_solver {
   std::deque<std::array<Planar_interval_net, 5>> pool;  // (growing a deque keeps references)
   /// Deepest subdivision level (cells 2^-max_depth wide) before giving up.
   int max_depth = 24;
+  /// From this depth on, cells that the double Krawczyk test leaves undecided get the MPFI test (needs Hz).
+  int mpfi_depth = 1000;
+  /// Boxes of one zero that double Krawczyk cannot merge get the MPFI test too (needs Hz).
+  bool mpfi_merge = false;
+  mpfr_prec_t mpfi_precision = 192;
 
   /// Call with the whole nets on [0,1] x [0,1] and depth 0.
   void run(const Planar_interval_net& na, double s0, double s1, const Planar_interval_net& nb, double t0, double t1, int depth) {
@@ -211,6 +308,13 @@ struct Planar_interval_solver {
         return;
       }
       if (excluded) return;  // no zero in the enlarged cell
+      if (depth >= mpfi_depth) {  // doubles too coarse here: the same test in MPFI
+        S = Planar_interval(s0 - es, s1 + es);
+        T = Planar_interval(t0 - et, t1 + et);
+        const int k = planar_krawczyk_mpfi(A.Hz, B.Hz, S, T, mpfi_precision);
+        if (k > 0) add(S, T);
+        if (k != 0) return;
+      }
     }
     if (depth >= max_depth) {
       failed = true;
@@ -269,74 +373,23 @@ struct Planar_interval_solver {
     }
     for (auto& f : found) {
       if (S.sup() < f[0] || f[1] < S.inf() || T.sup() < f[2] || f[3] < T.inf()) continue;
-      // the boxes meet: one zero if Krawczyk proves uniqueness on their hull
-      Planar_interval HS(std::min(S.inf(), f[0]), std::max(S.sup(), f[1])), HT(std::min(T.inf(), f[2]), std::max(T.sup(), f[3]));
-      const double es = HS.sup() - HS.inf(), et = HT.sup() - HT.inf();
-      HS = Planar_interval(HS.inf() - es, HS.sup() + es);
-      HT = Planar_interval(HT.inf() - et, HT.sup() + et);
-      if (!planar_krawczyk(A, B, HS, HT, 0)) failed = true;
+      // the boxes meet: one zero if Krawczyk proves uniqueness on a box holding both (their hull, enlarged; boxes
+      // a few ulps wide are enlarged further, since rounding errors dominate the test there)
+      const Planar_interval HS(std::min(S.inf(), f[0]), std::max(S.sup(), f[1])),
+          HT(std::min(T.inf(), f[2]), std::max(T.sup(), f[3]));
+      double es = HS.sup() - HS.inf(), et = HT.sup() - HT.inf();
+      for (int k = 0; k < 10; ++k, es = std::max(4 * es, 1e-10), et = std::max(4 * et, 1e-10)) {
+        Planar_interval XS(HS.inf() - es, HS.sup() + es), XT(HT.inf() - et, HT.sup() + et);
+        if (planar_krawczyk(A, B, XS, XT, 0)) return;
+        if (mpfi_merge && planar_krawczyk_mpfi(A.Hz, B.Hz, XS, XT, mpfi_precision) > 0) return;
+      }
+      failed = true;
       return;
     }
     found.push_back({S.inf(), S.sup(), T.inf(), T.sup()});
   }
 };
 
-
-/// Krawczyk contraction in MPFI at precision `prec` for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2
-/// (integer power forms): X <- K(X) ∩ X, `rounds` times or until no progress. Every zero of G in X lies in K(X)
-/// (mean value form; no inclusion needed), so the box keeps every zero it held. Returns false if K(X) ∩ X is empty
-/// or the operator is not finite (then X is unchanged). box = (s_lo, s_hi, t_lo, t_hi), exact rationals. Stops
-/// early once both widths are <= stop_width or near the precision's resolution.
-inline bool planar_krawczyk_contract(const std::array<Polynomial_1<Integer>, 3>& A,
-                                     const std::array<Polynomial_1<Integer>, 3>& B, std::array<Rational, 4>& box,
-                                     mpfr_prec_t prec, int rounds, double stop_width = 0) {
-  using I = Mpfi_interval;
-  I X[2] = {I::hull(box[0], box[1], prec), I::hull(box[2], box[3], prec)};
-  const double floor_width = std::ldexp(1.0, 24 - int(prec));  // parameters lie in [-1, 2] or so
-  for (int round = 0; round < rounds; ++round) {
-    const double w0 = X[0].width_double(), w1 = X[1].width_double();
-    if ((w0 <= stop_width && w1 <= stop_width) || (w0 <= floor_width && w1 <= floor_width)) break;
-    const I cs = X[0].midpoint(), ct = X[1].midpoint();
-    const Form_enclosure a(A, X[0]), b(B, X[1]), ac(A, cs), bc(B, ct);
-    I J[2][2] = {{I(prec), I(prec)}, {I(prec), I(prec)}};
-    I G[2] = {I(prec), I(prec)};
-    for (int k = 1; k <= 2; ++k) {
-      J[k - 1][0] = a.df[k] * b.f[0] - b.f[k] * a.df[0];
-      J[k - 1][1] = a.f[k] * b.df[0] - b.df[k] * a.f[0];
-      G[k - 1] = ac.f[k] * bc.f[0] - bc.f[k] * ac.f[0];
-    }
-    const double m00 = J[0][0].mid_double(), m01 = J[0][1].mid_double(), m10 = J[1][0].mid_double(),
-                 m11 = J[1][1].mid_double();
-    const double det = m00 * m11 - m01 * m10;
-    if (!std::isfinite(det) || det == 0) return false;
-    const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
-    const I one = I::point(1, prec), zero = I::point(0, prec);
-    const I c[2] = {cs, ct};
-    const I d[2] = {X[0] - cs, X[1] - ct};
-    I N[2] = {I(prec), I(prec)};
-    bool progress = false;
-    for (int i = 0; i < 2; ++i) {
-      const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
-      const I m0 = (i == 0 ? one : zero) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
-      const I m1 = (i == 1 ? one : zero) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
-      const I K = c[i] - yg + m0 * d[0] + m1 * d[1];
-      if (!std::isfinite(K.width_double())) return false;
-      mpfi_intersect(N[i].get(), K.get(), X[i].get());
-      if (mpfi_is_empty(N[i].get())) return false;
-      if (N[i].width_double() < 0.75 * X[i].width_double()) progress = true;
-    }
-    X[0] = N[0];
-    X[1] = N[1];
-    if (!progress) break;
-  }
-  const Rational nb[4] = {X[0].lower(), X[0].upper(), X[1].lower(), X[1].upper()};
-  // keep the old ends where they are tighter (both boxes hold the zeros)
-  box[0] = std::max(box[0], nb[0]);
-  box[1] = std::min(box[1], nb[1]);
-  box[2] = std::max(box[2], nb[2]);
-  box[3] = std::min(box[3], nb[3]);
-  return true;
-}
 
 }  // namespace internal
 }  // namespace bezoutian
