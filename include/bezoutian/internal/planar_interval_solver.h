@@ -244,10 +244,11 @@ inline int planar_krawczyk_mpfi(const std::array<Polynomial_1<Integer>, 3>& A,
 }
 
 /// Certified transversal intersections of two different supporting curves by interval subdivision: every cell
-/// pair of parameter squares whose control boxes meet is either excluded after halving or holds, in a slightly
-/// enlarged box, exactly one zero (Krawczyk), contracted to a tiny box. Returns false (caller: exact path) when
-/// this does not settle everything: tangencies, overlaps, intersections at or near parameter 0 or 1, boxes of
-/// two cells that meet without a common proof, or a work budget exceeded.
+/// pair of parameter squares whose control boxes meet is either excluded (after halving, or because Krawczyk's
+/// operator misses the slightly enlarged cell) or holds, in the enlarged cell, exactly one zero (Krawczyk),
+/// contracted to a tiny box. Sets `failed` (caller: exact path) when this does not settle everything:
+/// tangencies, overlaps, intersections at or near parameter 0 or 1, boxes of two cells that meet without a common
+/// proof, the depth limit or the work budget.
 ///
 /// Common end points C_A(e_a) = C_B(e_b), e_a, e_b in {0, 1} (exact comparison of the end control points) are
 /// `contacts`, exact intersections with rational parameters; a cell having one as a corner is settled when a
