@@ -670,23 +670,8 @@ class Subdivision_topology {
       for (int i = 0; i <= a_; ++i)
         for (int j = 0; j + s < b_; ++j) mpfi_sub(W(i, j), W(i, j + 1), W(i, j));
     // collapse every row (fixed i) along y, then the column along x
-    for (int i = 0; i <= n; ++i) {
-      __mpfi_struct* row = W(i, 0);
-      for (int level = m; level >= 1; --level)
-        for (int j = 0; j < level; ++j) {
-          mpfi_mul(t, &row[j], y1);
-          mpfi_mul(&row[j], &row[j + 1], y.get());
-          mpfi_add(&row[j], &row[j], t);
-        }
-      mpfi_set(&col[i], &row[0]);
-    }
-    for (int level = n; level >= 1; --level)
-      for (int i = 0; i < level; ++i) {
-        mpfi_mul(t, &col[i], x1);
-        mpfi_mul(&col[i], &col[i + 1], x.get());
-        mpfi_add(&col[i], &col[i], t);
-      }
-    mpfi_set(r.get(), &col[0]);
+    for (int i = 0; i <= n; ++i) bernstein_value(W(i, 0), m, y.get(), y1, &col[i], t);
+    bernstein_value(&col[0], n, x.get(), x1, r.get(), t);
     for (int s = 0; s < di; ++s) mpfi_mul_si(r.get(), r.get(), a_ - s);
     for (int s = 0; s < dj; ++s) mpfi_mul_si(r.get(), r.get(), b_ - s);
     for (auto& z : w) mpfi_clear(&z);
@@ -696,6 +681,54 @@ class Subdivision_topology {
     mpfi_clear(y1);
     return r;
   }
+  // sum_k c_k C(n,k) t^k s^(n-k) (s = 1 - t) into `out` (c is overwritten). When t and s are positive intervals:
+  // Horner's rule in q = t/s (or s/t when t > 1/2, so that |q| <= 1 about the midpoint), times s^n (t^n): O(n)
+  // interval operations; otherwise de Casteljau's algorithm (O(n^2)). Both are enclosures of the value.
+  void bernstein_value(__mpfi_struct* c, int n, mpfi_srcptr t, mpfi_srcptr s, mpfi_ptr out, mpfi_ptr tmp) const {
+    if (n >= 1 && mpfi_is_strictly_pos(t) && mpfi_is_strictly_pos(s)) {
+      const std::vector<Integer>& C = binomials(n);
+      mpfr_t mid;
+      mpfr_init2(mid, 53);
+      mpfi_mid(mid, t);
+      const bool small_t = mpfr_cmp_d(mid, 0.5) <= 0;
+      mpfr_clear(mid);
+      mpfi_t q;
+      mpfi_init2(q, prec_);
+      if (small_t)
+        mpfi_div(q, t, s);
+      else
+        mpfi_div(q, s, t);
+      const int first = small_t ? n : 0, step = small_t ? -1 : 1;
+      mpfi_mul_z(out, &c[first], C[first].mpz());
+      for (int k = first + step; k >= 0 && k <= n; k += step) {
+        mpfi_mul(out, out, q);
+        mpfi_mul_z(tmp, &c[k], C[k].mpz());
+        mpfi_add(out, out, tmp);
+      }
+      mpfi_set(q, small_t ? s : t);  // times s^n (t^n)
+      for (int e = n; e > 0; e >>= 1) {
+        if (e & 1) mpfi_mul(out, out, q);
+        if (e > 1) mpfi_sqr(q, q);
+      }
+      mpfi_clear(q);
+      return;
+    }
+    for (int level = n; level >= 1; --level)
+      for (int j = 0; j < level; ++j) {
+        mpfi_mul(tmp, &c[j], s);
+        mpfi_mul(&c[j], &c[j + 1], t);
+        mpfi_add(&c[j], &c[j], tmp);
+      }
+    mpfi_set(out, &c[0]);
+  }
+  const std::vector<Integer>& binomials(int n) const {
+    auto it = binomials_.find(n);
+    if (it != binomials_.end()) return it->second;
+    std::vector<Integer> C(std::size_t(n + 1), Integer(1));
+    for (int k = 1; k <= n; ++k) C[k] = C[k - 1] * Integer(n - k + 1) / Integer(k);
+    return binomials_[n] = C;
+  }
+
   // Value and derivatives up to order 2 of the long double grid at (x, y): f, fx, fy, fxx, fxy, fyy.
   std::array<long double, 6> local_jet(const std::vector<long double>& L, long double x, long double y) const {
     // Bernstein basis values and first/second derivatives in each variable
@@ -1135,6 +1168,7 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
+  mutable std::map<int, std::vector<Integer>> binomials_;
   std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)
   static constexpr int undecided_depth = 16;  // below it such a point waits for the phantom exclusion
   std::set<std::size_t> cut_;             // nodes on the edges of excised boxes
