@@ -140,3 +140,21 @@ TEST_CASE("the two-partner witness proves the node and nothing at regular points
   CHECK_FALSE(internal::no_genuine_partner(eq, around, Parameter_box{Q(-1), Q(1), Q(-1), Q(1)}));
   CHECK(internal::no_genuine_partner(eq, around, Parameter_box{Q(99, 100), Q(1), Q(-1), Q(1)}));
 }
+
+TEST_CASE("partners of a bi-degree (3,2) self-intersection: the folded patch's double line, in closed form",
+          "[surface][witness]") {
+  // Phi(u,v) = ((u - 1/2)^2, v^2, (u - 1/2)(v - 1/3)) as a (3,2) patch (x degree-elevated in u). Phi(u, 1/3) =
+  // Phi(1 - u, 1/3): the line v = 1/3 is a double curve. With P = (u, v + k), Q = (u + l, v) the partner of
+  // (u, 1/3) is (l, k) = (1 - 2u, 0) and no other (k = -2/3 makes the z's differ). The equations have degree 3
+  // in l but 2 in k; a common formal degree 3 made the Sylvester resultant vanish and no partner was found.
+  const auto phi = bezoutian_test::patch_from_power({"(u-1/2)^2", "v^2", "(u-1/2)*(v-1/3)"}, 3, 2);
+  const bezoutian::internal::Partner_equations eq(phi);
+  CHECK(eq.degree_bounds()[0] == 3);
+  CHECK(eq.degree_bounds()[1] == 2);
+  for (double u : {0.1, 0.3, 0.45, 0.8}) {
+    const auto partners = bezoutian::internal::numerical_partners(eq, {u, 1.0 / 3});
+    REQUIRE(partners.size() == 1);
+    CHECK(std::abs(partners[0][0] - std::complex<double>(1 - 2 * u)) < 1e-8);
+    CHECK(std::abs(partners[0][1]) < 1e-8);
+  }
+}

@@ -356,7 +356,7 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
     eq.evaluate({C(x[0]), C(x[1]), y1, y2}, E, J);
     return E;
   };
-  // coefficients in y2 of E_1, E_2 at y1 (inverse DFT of values at the (d+1)-th roots of unity)
+  // coefficients in y2 of E_which at y1 (inverse DFT of values at the (d+1)-th roots of unity)
   auto coefficients = [&](C y1, int which) {
     std::vector<C> v(d + 1), c(d + 1, 0);
     for (int k = 0; k <= d; ++k) v[k] = E_at(y1, std::polar(1.0, 2 * M_PI * k / (d + 1)))[which];
@@ -408,7 +408,22 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
     }
     for (const C& y1 : complex_roots(co)) {
       if (!(std::abs(y1) < 1e6)) continue;
-      for (const C& y2 : complex_roots(coefficients(y1, 0))) {
+      // y2: roots of every equation that does not vanish identically at y1 (one may not involve y2 at all,
+      // e.g. a coordinate of a patch that depends on u only)
+      std::array<std::vector<C>, 3> cy;
+      double big = 0;
+      for (int c = 0; c < 3; ++c) {
+        cy[c] = coefficients(y1, c);
+        for (const C& v : cy[c]) big = std::max(big, std::abs(v));
+      }
+      std::vector<C> y2s;
+      for (int c = 0; c < 3; ++c) {
+        double b = 0;
+        for (const C& v : cy[c]) b = std::max(b, std::abs(v));
+        if (!(b > 1e-9 * big)) continue;
+        for (const C& r : complex_roots(cy[c])) y2s.push_back(r);
+      }
+      for (const C& y2 : y2s) {
         std::array<C, 2> y{y1, y2};
         for (int it = 0; it < 30; ++it) {  // Gauss-Newton on the three equations
           std::array<C, 3> E;
