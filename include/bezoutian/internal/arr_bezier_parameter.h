@@ -198,39 +198,14 @@ inline void arr_eval_bivariate(const std::vector<std::vector<Arr_interval>>& f, 
 /// arr_krawczyk.
 inline bool arr_krawczyk_self(const Arr_bezier_supporting_curve& A, Arr_interval& S, Arr_interval& T, int iterations) {
   typedef Arr_interval I;
-  typename I::Protector guard;
-  for (int round = 0; round <= iterations; ++round) {
-    const double cs = 0.5 * (S.inf() + S.sup()), ct = 0.5 * (T.inf() + T.sup());
-    I J[2][2], G[2], d1, d2;
+  auto jet = [&](double cs, double ct, I J[2][2], I G[2]) {
+    I d1, d2;
     for (int k = 0; k < 2; ++k) {
       arr_eval_bivariate(A.fd[k], S, T, d1, J[k][0], J[k][1]);
       arr_eval_bivariate(A.fd[k], I(cs), I(ct), G[k], d1, d2);
     }
-    const double m00 = CGAL::to_double(J[0][0]), m01 = CGAL::to_double(J[0][1]), m10 = CGAL::to_double(J[1][0]),
-                 m11 = CGAL::to_double(J[1][1]);
-    const double det = m00 * m11 - m01 * m10;
-    if (!std::isfinite(det) || det == 0) return round > 0;
-    const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
-    const I ds = S - I(cs), dt = T - I(ct);
-    I K[2];
-    const double c[2] = {cs, ct};
-    for (int i = 0; i < 2; ++i) {
-      const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
-      const I m0 = I(i == 0 ? 1.0 : 0.0) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
-      const I m1 = I(i == 1 ? 1.0 : 0.0) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
-      K[i] = I(c[i]) - yg + m0 * ds + m1 * dt;
-      if (!std::isfinite(K[i].inf()) || !std::isfinite(K[i].sup())) return round > 0;
-    }
-    if (round == 0 && !(K[0].inf() > S.inf() && K[0].sup() < S.sup() && K[1].inf() > T.inf() && K[1].sup() < T.sup()))
-      return false;
-    const I S2(std::max(S.inf(), K[0].inf()), std::min(S.sup(), K[0].sup()));
-    const I T2(std::max(T.inf(), K[1].inf()), std::min(T.sup(), K[1].sup()));
-    const bool progress = S2.sup() - S2.inf() < 0.99 * (S.sup() - S.inf()) || T2.sup() - T2.inf() < 0.99 * (T.sup() - T.inf());
-    S = S2;
-    T = T2;
-    if (!progress && round > 0) break;
-  }
-  return true;
+  };
+  return planar_krawczyk_iterate(jet, S, T, iterations, nullptr);
 }
 
 /// Certified self-intersections C(s) = C(t), s < t, of a supporting curve by interval subdivision of the

@@ -67,28 +67,19 @@ inline void planar_eval_form(const Planar_interval_curve& c, const Planar_interv
   }
 }
 
-/// Krawczyk's test (Krawczyk 1969; Moore 1977) in outward-rounded double intervals for G_k(s,t) = A_k(s) B_0(t) -
-/// B_k(t) A_0(s), k = 1, 2 on the box S x T (the same system as internal::krawczyk_unique_intersection):
-/// K(X) inside the interior of X proves exactly one zero in X, a transversal intersection. On success S, T are
-/// contracted (X <- K(X) ∩ X, which keeps the zero) `iterations` times. Every zero in X lies in K(X) (mean value
-/// form), so K(X) ∩ X = ∅ proves that X holds no zero: then *excluded (if given) is set and false returned.
-inline bool planar_krawczyk(const Planar_interval_curve& A, const Planar_interval_curve& B, Planar_interval& S,
-                            Planar_interval& T, int iterations, bool* excluded = nullptr) {
+/// Krawczyk's iteration (Krawczyk 1969; Moore 1977) for a 2 x 2 system on S x T in outward-rounded double
+/// intervals. `jet(cs, ct, J, G)` encloses the Jacobian J over S x T and the value G at the centre (cs, ct).
+/// K(X) inside the interior of X proves exactly one zero in X; on success S, T are contracted (X <- K(X) ∩ X,
+/// which keeps the zero) `iterations` times. Every zero in X lies in K(X) (mean value form), so K(X) ∩ X = ∅
+/// proves that X holds no zero: then *excluded (if given) is set and false returned.
+template <class Jet>
+bool planar_krawczyk_iterate(Jet jet, Planar_interval& S, Planar_interval& T, int iterations, bool* excluded) {
   typedef Planar_interval I;
   typename I::Protector guard;  // rounding towards +infinity for the interval operations
   for (int round = 0; round <= iterations; ++round) {
     const double cs = 0.5 * (S.inf() + S.sup()), ct = 0.5 * (T.inf() + T.sup());
-    I af[3], adf[3], bf[3], bdf[3], acf[3], acd[3], bcf[3], bcd[3];
-    planar_eval_form(A, S, af, adf);
-    planar_eval_form(B, T, bf, bdf);
-    planar_eval_form(A, I(cs), acf, acd);
-    planar_eval_form(B, I(ct), bcf, bcd);
     I J[2][2], G[2];
-    for (int k = 1; k <= 2; ++k) {
-      J[k - 1][0] = adf[k] * bf[0] - bf[k] * adf[0];
-      J[k - 1][1] = af[k] * bdf[0] - bdf[k] * af[0];
-      G[k - 1] = acf[k] * bcf[0] - bcf[k] * acf[0];
-    }
+    jet(cs, ct, J, G);
     const double m00 = CGAL::to_double(J[0][0]), m01 = CGAL::to_double(J[0][1]), m10 = CGAL::to_double(J[1][0]),
                  m11 = CGAL::to_double(J[1][1]);
     const double det = m00 * m11 - m01 * m10;
@@ -119,6 +110,27 @@ inline bool planar_krawczyk(const Planar_interval_curve& A, const Planar_interva
     if (!progress && round > 0) break;
   }
   return true;
+}
+
+/// Krawczyk's test for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2 on the box S x T (the same system as
+/// internal::krawczyk_unique_intersection): success proves exactly one zero in S x T, a transversal
+/// intersection (see planar_krawczyk_iterate).
+inline bool planar_krawczyk(const Planar_interval_curve& A, const Planar_interval_curve& B, Planar_interval& S,
+                            Planar_interval& T, int iterations, bool* excluded = nullptr) {
+  typedef Planar_interval I;
+  auto jet = [&](double cs, double ct, I J[2][2], I G[2]) {
+    I af[3], adf[3], bf[3], bdf[3], acf[3], acd[3], bcf[3], bcd[3];
+    planar_eval_form(A, S, af, adf);
+    planar_eval_form(B, T, bf, bdf);
+    planar_eval_form(A, I(cs), acf, acd);
+    planar_eval_form(B, I(ct), bcf, bcd);
+    for (int k = 1; k <= 2; ++k) {
+      J[k - 1][0] = adf[k] * bf[0] - bf[k] * adf[0];
+      J[k - 1][1] = af[k] * bdf[0] - bdf[k] * af[0];
+      G[k - 1] = acf[k] * bcf[0] - bcf[k] * acf[0];
+    }
+  };
+  return planar_krawczyk_iterate(jet, S, T, iterations, excluded);
 }
 
 /// Control box of an interval net (false if a weight enclosure is not positive).
