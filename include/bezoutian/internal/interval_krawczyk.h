@@ -232,20 +232,16 @@ struct Form_enclosure {
            Mpfi_interval::horner(CGAL::differentiate(F[2]), u)} {}
 };
 
-/// Krawczyk's test (Krawczyk 1969; Moore 1977) for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2, the
-/// intersection of the plane curves A = (A_0 : A_1 : A_2)(s) and B(t) in homogeneous power form. With X the box
-/// (s_lo, s_hi) x (t_lo, t_hi), c a point of X and Y any 2x2 matrix,
-///   K(X) = c - Y G(c) + (I - Y G'(X)) (X - c);
-/// K(X) inside the open box proves that X holds exactly one zero of G (and that G' is regular on X: the zero is
-/// a transversal intersection). Returns true only with that proof; false means "not proved".
-inline bool krawczyk_unique_intersection(const std::array<Polynomial_1<Integer>, 3>& A,
-                                         const std::array<Polynomial_1<Integer>, 3>& B, const Rational& s_lo,
-                                         const Rational& s_hi, const Rational& t_lo, const Rational& t_hi,
-                                         mpfr_prec_t prec) {
+/// Krawczyk's operator in MPFI at precision `prec` for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2
+/// (integer power forms) on the box X = S x T: K(X) = c - Y G(c) + (I - Y G'(X)) (X - c), c the midpoint, Y the
+/// inverse of the midpoint Jacobian. Every zero of G in X lies in K(X) (mean value form). False if Y or K is not
+/// finite.
+inline bool planar_krawczyk_operator(const std::array<Polynomial_1<Integer>, 3>& A,
+                                     const std::array<Polynomial_1<Integer>, 3>& B, const Mpfi_interval X[2],
+                                     Mpfi_interval K[2], mpfr_prec_t prec) {
   using I = Mpfi_interval;
-  const I Xs = I::hull(s_lo, s_hi, prec), Xt = I::hull(t_lo, t_hi, prec);
-  const I cs = Xs.midpoint(), ct = Xt.midpoint();
-  const Form_enclosure a(A, Xs), b(B, Xt), ac(A, cs), bc(B, ct);
+  const I cs = X[0].midpoint(), ct = X[1].midpoint();
+  const Form_enclosure a(A, X[0]), b(B, X[1]), ac(A, cs), bc(B, ct);
   I J[2][2] = {{I(prec), I(prec)}, {I(prec), I(prec)}};
   I G[2] = {I(prec), I(prec)};
   for (int k = 1; k <= 2; ++k) {
@@ -256,20 +252,36 @@ inline bool krawczyk_unique_intersection(const std::array<Polynomial_1<Integer>,
   const double m00 = J[0][0].mid_double(), m01 = J[0][1].mid_double(), m10 = J[1][0].mid_double(),
                m11 = J[1][1].mid_double();
   const double det = m00 * m11 - m01 * m10;
-  if (!(std::isfinite(det)) || det == 0) return false;
+  if (!std::isfinite(det) || det == 0) return false;
   const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
   if (!std::isfinite(Y[0][0]) || !std::isfinite(Y[0][1]) || !std::isfinite(Y[1][0]) || !std::isfinite(Y[1][1]))
     return false;
-  const I ds = Xs - cs, dt = Xt - ct;
   const I one = I::point(1, prec), zero = I::point(0, prec);
-  I K[2] = {I(prec), I(prec)};
   const I c[2] = {cs, ct};
+  const I d[2] = {X[0] - cs, X[1] - ct};
   for (int i = 0; i < 2; ++i) {
     const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
     const I m0 = (i == 0 ? one : zero) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
     const I m1 = (i == 1 ? one : zero) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
-    K[i] = c[i] - yg + m0 * ds + m1 * dt;
+    K[i] = c[i] - yg + m0 * d[0] + m1 * d[1];
+    if (!std::isfinite(K[i].width_double())) return false;
   }
+  return true;
+}
+
+/// Krawczyk's test (Krawczyk 1969; Moore 1977) for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2, the
+/// intersection of the plane curves A = (A_0 : A_1 : A_2)(s) and B(t) in homogeneous power form, on the box X =
+/// (s_lo, s_hi) x (t_lo, t_hi): K(X) (planar_krawczyk_operator) inside the open box proves that X holds exactly
+/// one zero of G (and that G' is regular on X: the zero is a transversal intersection). Returns true only with
+/// that proof; false means "not proved".
+inline bool krawczyk_unique_intersection(const std::array<Polynomial_1<Integer>, 3>& A,
+                                         const std::array<Polynomial_1<Integer>, 3>& B, const Rational& s_lo,
+                                         const Rational& s_hi, const Rational& t_lo, const Rational& t_hi,
+                                         mpfr_prec_t prec) {
+  using I = Mpfi_interval;
+  const I X[2] = {I::hull(s_lo, s_hi, prec), I::hull(t_lo, t_hi, prec)};
+  I K[2] = {I(prec), I(prec)};
+  if (!planar_krawczyk_operator(A, B, X, K, prec)) return false;
   return K[0].inside_open(s_lo, s_hi) && K[1].inside_open(t_lo, t_hi);
 }
 

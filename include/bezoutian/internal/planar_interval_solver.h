@@ -165,43 +165,6 @@ inline void planar_net_halves(const Planar_interval_net& q, Planar_interval_net&
   std::reverse(right.begin(), right.end());
 }
 
-/// Krawczyk's operator in MPFI at precision `prec` for G_k(s,t) = A_k(s) B_0(t) - B_k(t) A_0(s), k = 1, 2
-/// (integer power forms) on the box X = S x T: K(X) = c - Y G(c) + (I - Y G'(X)) (X - c), c the midpoint, Y the
-/// inverse of the midpoint Jacobian. Every zero of G in X lies in K(X) (mean value form). False if Y or K is not
-/// finite.
-inline bool planar_krawczyk_operator(const std::array<Polynomial_1<Integer>, 3>& A,
-                                     const std::array<Polynomial_1<Integer>, 3>& B, const Mpfi_interval X[2],
-                                     Mpfi_interval K[2], mpfr_prec_t prec) {
-  using I = Mpfi_interval;
-  const I cs = X[0].midpoint(), ct = X[1].midpoint();
-  const Form_enclosure a(A, X[0]), b(B, X[1]), ac(A, cs), bc(B, ct);
-  I J[2][2] = {{I(prec), I(prec)}, {I(prec), I(prec)}};
-  I G[2] = {I(prec), I(prec)};
-  for (int k = 1; k <= 2; ++k) {
-    J[k - 1][0] = a.df[k] * b.f[0] - b.f[k] * a.df[0];
-    J[k - 1][1] = a.f[k] * b.df[0] - b.df[k] * a.f[0];
-    G[k - 1] = ac.f[k] * bc.f[0] - bc.f[k] * ac.f[0];
-  }
-  const double m00 = J[0][0].mid_double(), m01 = J[0][1].mid_double(), m10 = J[1][0].mid_double(),
-               m11 = J[1][1].mid_double();
-  const double det = m00 * m11 - m01 * m10;
-  if (!std::isfinite(det) || det == 0) return false;
-  const double Y[2][2] = {{m11 / det, -m01 / det}, {-m10 / det, m00 / det}};
-  if (!std::isfinite(Y[0][0]) || !std::isfinite(Y[0][1]) || !std::isfinite(Y[1][0]) || !std::isfinite(Y[1][1]))
-    return false;
-  const I one = I::point(1, prec), zero = I::point(0, prec);
-  const I c[2] = {cs, ct};
-  const I d[2] = {X[0] - cs, X[1] - ct};
-  for (int i = 0; i < 2; ++i) {
-    const I yg = Y[i][0] * G[0] + Y[i][1] * G[1];
-    const I m0 = (i == 0 ? one : zero) - (Y[i][0] * J[0][0] + Y[i][1] * J[1][0]);
-    const I m1 = (i == 1 ? one : zero) - (Y[i][0] * J[0][1] + Y[i][1] * J[1][1]);
-    K[i] = c[i] - yg + m0 * d[0] + m1 * d[1];
-    if (!std::isfinite(K[i].width_double())) return false;
-  }
-  return true;
-}
-
 /// Krawczyk contraction in MPFI: X <- K(X) ∩ X, `rounds` times or until no progress (X keeps every zero it held).
 /// Returns false if K(X) ∩ X is empty or the operator is not finite (then the box is unchanged).
 /// box = (s_lo, s_hi, t_lo, t_hi), exact rationals. Stops early once both widths are <= stop_width or near the
