@@ -92,43 +92,22 @@ inline std::vector<std::vector<Integer>> arr_divided_difference(const Ci_poly1& 
 inline void arr_piece_boxes(Arr_bezier_supporting_curve& s) {
   typedef CGAL::Interval_nt<false> I;
   typename I::Protector guard;
-  using Net = std::vector<std::array<I, 3>>;
+  using Net = Planar_interval_net;
   Net net;
   for (const auto& h : s.curve.homogeneous_control_points())
     net.push_back({I(CGAL::to_interval(h[0])), I(CGAL::to_interval(h[1])), I(CGAL::to_interval(h[2]))});
   const int depth = Arr_bezier_supporting_curve::box_depth;
   s.piece_boxes.assign((std::size_t(1) << (depth + 1)) - 1, {{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL}});
-  const I half(0.5);
   std::vector<Net> level{net};
   for (int d = 0; d <= depth; ++d) {
     std::vector<Net> next;
     for (std::size_t i = 0; i < level.size(); ++i) {
       const Net& q = level[i];
-      std::array<double, 4> b{{HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL}};
-      bool ok = true;
-      for (const auto& h : q) {
-        if (!(h[0].inf() > 0)) { ok = false; break; }
-        const I x = h[1] / h[0], y = h[2] / h[0];
-        b[0] = std::min(b[0], x.inf());
-        b[1] = std::max(b[1], x.sup());
-        b[2] = std::min(b[2], y.inf());
-        b[3] = std::max(b[3], y.sup());
-      }
-      if (ok && std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]))
-        s.piece_boxes[(std::size_t(1) << d) - 1 + i] = b;
+      double b[4];
+      if (planar_net_box(q, b)) s.piece_boxes[(std::size_t(1) << d) - 1 + i] = {{b[0], b[1], b[2], b[3]}};
       if (d == depth) continue;
-      // halves at 1/2: the de Casteljau triangle
-      Net tri = q, left, right;
-      const std::size_t n = q.size();
-      left.push_back(tri[0]);
-      right.push_back(tri[n - 1]);
-      for (std::size_t r = 1; r < n; ++r) {
-        for (std::size_t j = 0; j + r < n; ++j)
-          for (int k = 0; k < 3; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
-        left.push_back(tri[0]);
-        right.push_back(tri[n - 1 - r]);
-      }
-      std::reverse(right.begin(), right.end());
+      Net left, right, tri;
+      planar_net_halves(q, left, right, tri);
       next.push_back(left);
       next.push_back(right);
     }
