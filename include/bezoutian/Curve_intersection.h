@@ -14,6 +14,8 @@
 #include <bezoutian/internal/curve_intersection_support.h>
 #include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/internal/planar_interval_solver.h>
+#include <bezoutian/internal/space_interval_solver.h>
+#include <bezoutian/internal/space_shape_basis.h>
 
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>
@@ -214,7 +216,7 @@ class Curve_intersection_engine {
       constant_case(k1, k2, res);
       return res;
     }
-    if (method_ == Curve_intersection_method::default_method && planar_lazy_ && lazy_path(res)) {
+    if (method_ == Curve_intersection_method::default_method && planar_lazy_ && (lazy_path(res) || space_path(res))) {
       sort_points(res);
       return res;
     }
@@ -483,6 +485,148 @@ class Curve_intersection_engine {
       }
       return true;
     }
+  }
+
+  // ---------------------------------------------------------------- space path (default method, D == 3)
+  // Space curves with positive weights. Intervals first (space_interval_solver.h): boxes covering every common
+  // point in [0,1]^2, each holding exactly one zero of a square subsystem (G_a, G_b) (Krawczyk), boxes where the
+  // third equation is proved nonzero dropped; none left = no intersection. Otherwise the exact step, small: the shape
+  // basis {g(s) = 0, t = psi(s)} of F_1 = F_2 = F_3 = 0 (space_shape_basis.h: modular, verified exactly over Q), so
+  // that every root of g gives a proved common point (sigma, psi(sigma)). Every box must contain one of them
+  // (isolating interval of sigma and an enclosure of psi(sigma) inside the box): a box holds at most one zero of
+  // its subsystem, which is then that common point, so nothing is missed. Krawczyk's proof includes a regular
+  // Jacobian of the subsystem, i.e. non-parallel tangents: transversal, multiplicity 1. Anything else (tangency,
+  // overlap, common points with equal s, an unmatched box) returns false: the exact paths below decide.
+  bool space_path(Curve_intersection_result& res) const {
+    if constexpr (D != 3) {
+      (void)res;
+      return false;
+    } else {
+      if (!positive_weights(c1_) || !positive_weights(c2_)) return false;
+      CI_TICK_START;
+      const Space_interval_curve ia = space_interval_curve(c1_, H1_), ib = space_interval_curve(c2_, H2_);
+      Space_interval_solver solver{ia, ib, {}};
+      solver.run(ia.inet, 0, 1, ib.inet, 0, 1, 0);
+      CI_TICK("space interval solver");
+#ifdef CI_DEBUG
+      std::cerr << "  cells " << solver.cells << " krawczyk " << solver.krawczyk_tests << " boxes " << solver.found.size()
+                << (solver.failed ? " FAILED" : "") << "\n";
+#endif
+      if (solver.failed) return false;
+      if (solver.found.empty()) return true;  // proved: no common point
+      Space_shape_basis sb;
+      if (!space_shape_basis(H1_, H2_, sb)) return false;
+      CI_TICK("space shape basis");
+      const std::size_t d = sb.g.size() - 1;
+      if (d == 0) return false;  // boxes left but no common zero: undecided here
+      Rational lo(0), hi(1);
+      for (const auto& b : solver.found) {
+        lo = std::min(lo, Rational(b.s_lo));
+        hi = std::max(hi, Rational(b.s_hi));
+      }
+      const Polynomial_1<Rational> g(sb.g.begin(), sb.g.end());
+      const Polynomial_1<Rational> psi = sb.psi.empty() ? Polynomial_1<Rational>(0)
+                                                         : Polynomial_1<Rational>(sb.psi.begin(), sb.psi.end());
+      const std::vector<Isolated_root> roots = isolate_real_roots(g, lo, hi);
+      CI_TICK("space isolate");
+      auto eval = [](const Polynomial_1<Rational>& f, const Rational& x) {
+        Rational r(0);
+        for (int i = f.degree(); i >= 0; --i) r = r * x + f[i];
+        return r;
+      };
+      // psi = N / q with an integer polynomial N and a positive rational q
+      const P1 N = CGAL::is_zero(psi) ? P1(0) : internal::integer_multiple(psi);
+      Rational q(1);
+      for (int i = 0; i <= psi.degree(); ++i)
+        if (!CGAL::is_zero(psi[i])) q = Rational(N[i]) / psi[i];
+      const P1 G = internal::integer_multiple(g);
+      std::vector<Rational> s_enc_lo, s_enc_hi, t_enc_lo, t_enc_hi;  // enclosures of (sigma, psi(sigma))
+      std::vector<Algebraic_real> ts;
+      std::vector<char> matched(solver.found.size(), 0);
+      for (const Isolated_root& r : roots) {
+        const Algebraic_real& x = r.root;
+        if (x.is_rational()) {
+          const Rational t = eval(psi, x.rational_value());
+          s_enc_lo.push_back(x.rational_value());
+          s_enc_hi.push_back(x.rational_value());
+          t_enc_lo.push_back(t);
+          t_enc_hi.push_back(t);
+          ts.push_back(Algebraic_real(t));
+          continue;
+        }
+        // irrational sigma: t = psi(sigma) is a root of P(t) = Res_s(g(s), den t - N(s)); its isolating interval
+        // from an MPFI enclosure of psi on sigma's refined interval
+        bool ok = false;
+        for (int bits = 64; bits <= 1024 && !ok; bits *= 2) {
+          Integer p2(1);
+          mpz_mul_2exp(p2.mpz(), p2.mpz(), (unsigned long)bits);
+          x.refine_to_width(Rational(1) / Rational(p2));
+          const mpfr_prec_t prec = mpfr_prec_t(2 * bits + 64 + coefficient_bits_);
+          using I = internal::Mpfi_interval;
+          const I u = I::hull(x.lower(), x.upper(), prec);
+          const I v = I::horner(N, u) / I::hull(q, q, prec);
+          const Rational vlo = v.lower(), vhi = v.upper();
+          try {
+            Algebraic_real t = CGAL::is_zero(psi) ? Algebraic_real(0) : Algebraic_real(partner_polynomial(G, N, q), vlo, vhi);
+            s_enc_lo.push_back(x.lower());
+            s_enc_hi.push_back(x.upper());
+            t_enc_lo.push_back(vlo);
+            t_enc_hi.push_back(vhi);
+            ts.push_back(t);
+            ok = true;
+          } catch (const Invalid_input&) {
+          }
+        }
+        if (!ok) return false;
+      }
+      CI_TICK("space partners");
+      // every box must hold a root (sigma, psi(sigma)); an irrational one is refined while its enclosure straddles
+      for (std::size_t k = 0; k < solver.found.size(); ++k) {
+        const auto& b = solver.found[k];
+        const Rational bs0(b.s_lo), bs1(b.s_hi), bt0(b.t_lo), bt1(b.t_hi);
+        for (std::size_t i = 0; i < roots.size() && !matched[k]; ++i) {
+          if (s_enc_hi[i] < bs0 || s_enc_lo[i] > bs1 || t_enc_hi[i] < bt0 || t_enc_lo[i] > bt1) continue;
+          if (bs0 <= s_enc_lo[i] && s_enc_hi[i] <= bs1 && bt0 <= t_enc_lo[i] && t_enc_hi[i] <= bt1) {
+            matched[k] = 1;
+            break;
+          }
+          // overlapping but not inside: compare the exact numbers with the box ends
+          const Algebraic_real& x = roots[i].root;
+          if (x.compare(bs0) >= 0 && x.compare(bs1) <= 0 && ts[i].compare(bt0) >= 0 && ts[i].compare(bt1) <= 0)
+            matched[k] = 1;
+        }
+        if (!matched[k]) return false;
+      }
+      for (std::size_t i = 0; i < roots.size(); ++i) {
+        const Algebraic_real &s = roots[i].root, &t = ts[i];
+        if (s.compare(Rational(0)) < 0 || s.compare(Rational(1)) > 0) continue;
+        if (t.compare(Rational(0)) < 0 || t.compare(Rational(1)) > 0) continue;
+        // a common point of the arcs lies in some box (the boxes cover all of them): check, for safety
+        bool in_box = false;
+        for (const auto& b : solver.found)
+          in_box = in_box || (s.compare(Rational(b.s_lo)) >= 0 && s.compare(Rational(b.s_hi)) <= 0 &&
+                              t.compare(Rational(b.t_lo)) >= 0 && t.compare(Rational(b.t_hi)) <= 0);
+        if (!in_box) return false;
+        Curve_intersection_point p;
+        p.s = s;
+        p.t = t;
+        auto end = [](const Algebraic_real& x) { return x.is_rational() && (x == 0 || x == 1); };
+        p.kind = (end(s) || end(t)) ? Curve_intersection_kind::endpoint : Curve_intersection_kind::transversal;
+        res.points.push_back(p);
+      }
+      CI_TICK("space match");
+      return true;
+    }
+  }
+
+  // P(t) = Res_s(g(s), b N(s) - a t) for psi = N / q, q = a / b: vanishes at psi(sigma) for every root sigma of g.
+  static P1 partner_polynomial(const P1& G, const P1& N, const Rational& q) {
+    std::vector<P1> gc, hc;
+    for (int i = 0; i <= G.degree(); ++i) gc.push_back(P1(G[i]));
+    for (int i = 0; i <= N.degree(); ++i) hc.push_back(P1(q.denominator() * N[i]));
+    if (hc.empty()) hc.push_back(P1(0));
+    hc[0] -= P1(Integer(0), q.numerator());
+    return CGAL::resultant(P2(gc.begin(), gc.end()), P2(hc.begin(), hc.end()));
   }
 
   // ---------------------------------------------------------------- fast certified path (default method)

@@ -23,22 +23,51 @@ using Ci_poly1 = Polynomial_1<Integer>;
 using Ci_poly2 = Polynomial_2<Integer>;
 
 /// The power form (W, X_1, .., X_D) of a curve, multiplied by one positive integer so that all coefficients are
-/// integers (the same projective curve).
+/// integers (the same projective curve): l times the rational power form, l the least common denominator of its
+/// coefficients. Computed from the integer multiple L h of the homogeneous control net h (binomial expansion
+/// a_k = sum_{i<=k} (-1)^(k-i) C(n,i) C(n-i,k-i) b_i, all in integers), then divided by gcd(L, content) = L / l.
 template <int D>
 std::array<Ci_poly1, D + 1> integer_power_form(const Rational_bezier_curve<Rational, D>& c) {
-  auto p = c.power_form();
-  Integer l(1);
-  for (const auto& q : p)
-    for (int i = 0; i <= q.degree(); ++i) l = CGAL::div(l * q[i].denominator(), CGAL::gcd(l, q[i].denominator()));
+  const auto& net = c.homogeneous_control_points();
+  const int n = int(net.size()) - 1;
+  mpz_t L, t, b, g;
+  mpz_init_set_ui(L, 1);
+  mpz_inits(t, b, g, nullptr);
+  for (const auto& h : net)
+    for (int k = 0; k <= D; ++k) mpz_lcm(L, L, mpq_denref(h[k].mpq()));
+  std::array<std::vector<Integer>, D + 1> a;
+  for (auto& v : a) v.assign(std::size_t(n + 1), Integer(0));
+  for (int i = 0; i <= n; ++i)
+    for (int k = 0; k <= D; ++k) {
+      const Rational& q = net[i][k];
+      if (CGAL::is_zero(q)) continue;
+      mpz_divexact(t, L, mpq_denref(q.mpq()));
+      mpz_mul(t, t, mpq_numref(q.mpq()));  // L h_ik
+      mpz_bin_uiui(b, (unsigned long)n, (unsigned long)i);
+      mpz_mul(t, t, b);
+      for (int e = i; e <= n; ++e) {
+        mpz_bin_uiui(b, (unsigned long)(n - i), (unsigned long)(e - i));
+        mpz_mul(b, b, t);
+        Integer& x = a[k][e];
+        Integer y;
+        if ((e - i) % 2) mpz_sub(y.mpz(), x.mpz(), b); else mpz_add(y.mpz(), x.mpz(), b);
+        x = y;
+      }
+    }
+  mpz_set(g, L);
+  for (const auto& v : a)
+    for (const Integer& x : v) mpz_gcd(g, g, x.mpz());
   std::array<Ci_poly1, D + 1> r;
   for (int k = 0; k <= D; ++k) {
-    std::vector<Integer> co;
-    for (int i = 0; i <= p[k].degree(); ++i) {
-      Rational v = p[k][i] * Rational(l);
-      co.push_back(v.numerator());
-    }
-    r[k] = Ci_poly1(co.begin(), co.end());
+    for (Integer& x : a[k])
+      if (!CGAL::is_zero(x)) {
+        Integer y;
+        mpz_divexact(y.mpz(), x.mpz(), g);
+        x = y;
+      }
+    r[k] = Ci_poly1(a[k].begin(), a[k].end());
   }
+  mpz_clears(L, t, b, g, nullptr);
   return r;
 }
 
