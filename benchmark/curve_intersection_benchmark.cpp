@@ -1,5 +1,6 @@
 // Curve/curve intersection timings: du-1989 Tables 4.1/4.2 protocol (3D rational and polynomial curves, degrees
-// 3-2 .. 3-6, 0-4 known intersections, N problems each, median per strategy) and planar pairs of degree 7 and 12
+// 3-2 .. 3-6, 0-4 known intersections, N problems each, median per strategy, the default also with its interval
+// path off) and planar pairs of degree 7 and 12
 // (default = lazy parameters, + materializing every parameter, the exact default path, projection, subresultant).
 //   curve_intersection_benchmark [N=10] [N_planar_7=10] [N_planar_12=2] [singular=0]
 // With singular=1, Singular's std (lexicographic, t > s) is timed on the same system (F1, F2, F3) for the first
@@ -87,20 +88,26 @@ int main(int argc, char** argv) {
                                                 Curve_intersection_method::subresultant,
                                                 Curve_intersection_method::projection,
                                                 Curve_intersection_method::resolvent};
-  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / subresultant / projection / resolvent"
-              " | Singular std (lex)\n", n);
+  // 3D: "default" is intersect_curves (interval boxes + verified modular shape basis, Curve_intersection.h
+  // space_path; the exact default path when that does not settle a pair), "exact" the default method with the
+  // interval paths off (the projection/determinant path). Per cell: how many pairs space_path settled.
+  std::printf("du-1989 protocol, 3D, %d problems per cell, median ms: default / exact default / subresultant / "
+              "projection / resolvent [pairs settled by the interval + shape basis path] | Singular std (lex)\n", n);
+  int settled_total = 0, problems_total = 0;
+  double worst_median = 0;
   for (int rat = 1; rat >= 0; --rat) {
     std::printf("%s curves\n  deg  ", rat ? "rational" : "polynomial");
-    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                                ", k);
+    for (int k = 0; k <= 4; ++k) std::printf("   k=%d                                              ", k);
     std::printf("\n");
     for (int n2 = 2; n2 <= 6; ++n2) {
       std::printf("  3-%d ", n2);
       for (int k = 0; k <= 4; ++k) {
         if (k > n2 + 1) {  // the generator needs k <= degree_2 + 1 (blank in du-1989's tables too)
-          std::printf("      -/     -/     -/     - |     -  ");
+          std::printf("     -/     -/     -/     -/     - [  ] |     -  ");
           continue;
         }
-        std::vector<double> t[4];
+        std::vector<double> t[4], exact;
+        int settled = 0;
         std::vector<std::string> ideals;
         for (int i = 0; i < n; ++i) {
           Curve_problem_parameters par;
@@ -112,15 +119,30 @@ int main(int argc, char** argv) {
           par.seed = 100000UL * n2 + 1000UL * k + 10UL * i + rat;
           const auto p = generate_curve_problem<3>(par);
           for (int m = 0; m < 4; ++m) t[m].push_back(time_ms(p, methods[m]));
+          {
+            const auto t0 = std::chrono::steady_clock::now();
+            const auto r = internal::Curve_intersection_engine<3>(p.curve_1, p.curve_2,
+                                                                  Curve_intersection_method::default_method, false).run();
+            exact.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+            if (r.points.size() < p.known.size()) std::printf("ERROR: missing intersections\n");
+            Curve_intersection_result q;
+            settled += internal::Curve_intersection_engine<3>(p.curve_1, p.curve_2,
+                                                              Curve_intersection_method::default_method).space_path(q);
+          }
           // Singular's lex std takes minutes per system here: only the first problem of the 3-2 cells
           if (n2 == 2 && i == 0 && singular) ideals.push_back(singular_ideal(p));
         }
-        std::printf(" %6.2f/%6.2f/%6.2f/%6.2f|%6.1f ", median(t[0]), median(t[1]), median(t[2]), median(t[3]),
-                    singular_median_ms(ideals));
+        std::printf(" %5.2f/%6.2f/%6.2f/%6.2f/%6.2f [%2d] |%6.1f ", median(t[0]), median(exact), median(t[1]),
+                    median(t[2]), median(t[3]), settled, singular_median_ms(ideals));
+        settled_total += settled;
+        problems_total += n;
+        worst_median = std::max(worst_median, median(t[0]));
       }
       std::printf("\n");
     }
   }
+  std::printf("3D default: largest cell median %.2f ms; %d of %d pairs settled by the interval + shape basis path\n",
+              worst_median, settled_total, problems_total);
   // Planar rows. The default method returns lazy parameters when the interval solver proves every crossing
   // (planar_interval_solver.h): "default" is that time; "+materialize" also makes every s and t exact (eliminants
   // R, T once per pair, then per number an isolating interval and the rationality decision); "exact default" is

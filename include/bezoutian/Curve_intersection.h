@@ -488,6 +488,7 @@ class Curve_intersection_engine {
   }
 
   // ---------------------------------------------------------------- space path (default method, D == 3)
+ public:
   // Space curves with positive weights. Intervals first (space_interval_solver.h): boxes covering every common
   // point in [0,1]^2, each holding exactly one zero of a square subsystem (G_a, G_b) (Krawczyk), boxes where the
   // third equation is proved nonzero dropped; none left = no intersection. Otherwise the exact step, small: the shape
@@ -497,6 +498,7 @@ class Curve_intersection_engine {
   // its subsystem, which is then that common point, so nothing is missed. Krawczyk's proof includes a regular
   // Jacobian of the subsystem, i.e. non-parallel tangents: transversal, multiplicity 1. Anything else (tangency,
   // overlap, common points with equal s, an unmatched box) returns false: the exact paths below decide.
+  // (Public for benchmarks: true = the pair was settled here, `res` holds the answer.)
   bool space_path(Curve_intersection_result& res) const {
     if constexpr (D != 3) {
       (void)res;
@@ -619,6 +621,7 @@ class Curve_intersection_engine {
     }
   }
 
+ private:
   // P(t) = Res_s(g(s), b N(s) - a t) for psi = N / q, q = a / b: vanishes at psi(sigma) for every root sigma of g.
   static P1 partner_polynomial(const P1& G, const P1& N, const Rational& q) {
     std::vector<P1> gc, hc;

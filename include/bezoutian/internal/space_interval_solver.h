@@ -92,8 +92,11 @@ struct Space_interval_solver {
   const Space_interval_curve& A;
   const Space_interval_curve& B;
   std::vector<Box> found;
+  // cells (enlarged) on which Krawczyk succeeded: each holds at most the one zero already dealt with, so a later
+  // cell inside one of them needs no work
+  std::vector<std::array<double, 4>> settled;
   int budget = 3000;
-  int max_depth = 30;
+  int max_depth = 40;  // levels of splitting (one or both parameters)
   bool failed = false;
   int cells = 0, krawczyk_tests = 0;  // statistics
   std::deque<std::array<Space_interval_net, 5>> pool;
@@ -187,7 +190,9 @@ struct Space_interval_solver {
       G[1] = G3[bb];
     };
     bool excluded = false;
+    const std::array<double, 4> domain{S.inf(), S.sup(), T.inf(), T.sup()};
     if (!planar_krawczyk_iterate(sub_jet, S, T, 16, &excluded)) return excluded ? -1 : 0;
+    settled.push_back(domain);
     // the zero of the subsystem in S x T; outside [0,1]^2 it is no common point of the arcs
     if (S.sup() < 0 || S.inf() > 1 || T.sup() < 0 || T.inf() > 1) return 1;
     Planar_interval J[3][2];
@@ -215,6 +220,8 @@ struct Space_interval_solver {
     }
     for (int k = 0; k < 3; ++k)
       if (ba[2 * k + 1] < bb[2 * k] || bb[2 * k + 1] < ba[2 * k]) return;
+    for (const auto& x : settled)
+      if (x[0] <= s0 && s1 <= x[1] && x[2] <= t0 && t1 <= x[3]) return;
     if (depth >= 1) {
       const int r = krawczyk_cell(s0, s1, t0, t1);
       if (r != 0) return;
@@ -226,13 +233,29 @@ struct Space_interval_solver {
     if (pool.size() <= std::size_t(depth)) pool.resize(depth + 1);
     auto& nets = pool[depth];
     Space_interval_net &al = nets[0], &ar = nets[1], &bl = nets[2], &br = nets[3];
-    halves(na, al, ar, nets[4]);
-    halves(nb, bl, br, nets[4]);
+    // split the piece that is larger in space (both if comparable): where one parameter runs much faster than the
+    // other (weights far apart), square cells would keep Krawczyk's Jacobian enclosure loose in that direction
+    double ea = 0, eb = 0;
+    for (int k = 0; k < 3; ++k) {
+      ea = std::max(ea, ba[2 * k + 1] - ba[2 * k]);
+      eb = std::max(eb, bb[2 * k + 1] - bb[2 * k]);
+    }
+    const bool split_a = !(eb > 4 * ea), split_b = !(ea > 4 * eb);
+    if (split_a) halves(na, al, ar, nets[4]);
+    if (split_b) halves(nb, bl, br, nets[4]);
     const double sm = 0.5 * (s0 + s1), tm = 0.5 * (t0 + t1);
-    run(al, s0, sm, bl, t0, tm, depth + 1);
-    run(al, s0, sm, br, tm, t1, depth + 1);
-    run(ar, sm, s1, bl, t0, tm, depth + 1);
-    run(ar, sm, s1, br, tm, t1, depth + 1);
+    if (split_a && split_b) {
+      run(al, s0, sm, bl, t0, tm, depth + 1);
+      run(al, s0, sm, br, tm, t1, depth + 1);
+      run(ar, sm, s1, bl, t0, tm, depth + 1);
+      run(ar, sm, s1, br, tm, t1, depth + 1);
+    } else if (split_a) {
+      run(al, s0, sm, nb, t0, t1, depth + 1);
+      run(ar, sm, s1, nb, t0, t1, depth + 1);
+    } else {
+      run(na, s0, s1, bl, t0, tm, depth + 1);
+      run(na, s0, s1, br, tm, t1, depth + 1);
+    }
   }
 };
 
