@@ -401,7 +401,18 @@ class Curve_intersection_engine {
   P1 strategy_R(const Elimination& e, const Form& A, const Form& B) const {
     if (plain_method()) return e.R;
     if (method_ == Curve_intersection_method::groebner) {
-      // the pair's ideal (in space the gcd with the other pairs' resultants follows in solve_system)
+      // Multi-modular lex basis certified over Q (Groebner_bivariate.h). Space curves: the whole system
+      // <F1, F2, F3> when its dimension count is sharp (no exact fallback: budget 0); otherwise, and in the plane,
+      // the pair's ideal (in space the gcd with the other pairs' resultants follows in solve_system).
+      if constexpr (D == 3) {
+        std::vector<P2> F;
+        for (int k = 1; k <= D; ++k) F.push_back(cross_term(A[k], B[0], B[k], A[0]));
+        try {
+          for (const auto& b : modular_lex_groebner_basis(F, nullptr, 0))
+            if (b.is_univariate_in_s()) return internal::integer_multiple(b.to_univariate());
+        } catch (const Error&) {
+        }
+      }
       const Polynomial_1<Rational> g = groebner_eliminant(std::vector<P2>{e.G1, e.G2});
       if (!CGAL::is_zero(g)) return internal::integer_multiple(g);
       return e.R;
