@@ -217,8 +217,11 @@ inline std::vector<Lex_polynomial_2> lex_groebner_basis(const std::vector<Lex_po
 //        R = ±lc_t(F1)^deg_t F2 det(F2 mod F1), Smith form over the discrete valuation ring O). Summing over λ,
 //        dim A = deg R. The same with s and t exchanged. So #standard monomials == deg Res proves <B> = I and B is
 //        THE reduced lex basis; a smaller count proves B wrong (an ideal larger than I: more primes are taken).
-//        When both directions have common leading-coefficient roots, or for a number of equations other than two,
-//        the count is not available and the exact rational Buchberger algorithm (within its budget) is used.
+//        For r >= 3 equations (space curves) with pairwise coprime leading coefficients the same local argument
+//        bounds dim Q[s,t]/I <= deg gcd_{i<j} Res_t(F_i, F_j) (Quotient_dimension); a count reaching the bound
+//        proves B, a smaller one leaves it open.
+//        When the leading coefficients have common roots in both directions, or the bound of r >= 3 equations is
+//        not reached, the exact rational Buchberger algorithm (within its budget: Error beyond it) is used.
 // If every check passes, the univariate element of B is exactly the generator of I ∩ Q[s].
 
 /// How a basis of `modular_lex_groebner_basis` was obtained.
@@ -239,7 +242,8 @@ enum class Groebner_check {
   ideal_not_contained,   ///< (a) fails: some F_i does not reduce to 0 modulo B
   not_a_groebner_basis,  ///< (b) fails: an S-polynomial of B does not reduce to 0
   dimension_mismatch,    ///< (c) fails: #standard monomials != dim Q[s,t]/<F> (B generates a larger ideal)
-  dimension_unknown      ///< (c) unavailable: not two equations, or common leading-coefficient roots in both directions
+  dimension_unknown      ///< (c) unavailable: leading coefficients not (pairwise) coprime in either direction, or
+                         ///< for three or more equations a count below the resultant gcd's degree (not sharp)
 };
 
 namespace internal {
@@ -355,33 +359,76 @@ inline int resultant_degree(const Dense_Z& f, const Dense_Z& g, bool exact) {
   return -1;
 }
 
-/// dim Q[s,t]/<F1, F2> from the resultant (see (c) above), computed lazily: first an upper bound, the exact degree
-/// on demand.
+/// Res_t(f, g) exactly (multi-modular determinant of the Sylvester matrix), 0 if it vanishes.
+inline Polynomial_1<Integer> resultant_polynomial(const Dense_Z& f, const Dense_Z& g) {
+  const std::size_t m = f.rows.size() - 1, n = g.rows.size() - 1, N = m + n;
+  if (N == 0) return Polynomial_1<Integer>(1);
+  std::vector<Dense_polynomial_entry> A(N * N);
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t k = 0; k <= m; ++k) A[r * N + r + k] = dense_entry(row_polynomial(f.rows[m - k]));
+  for (std::size_t r = 0; r < m; ++r)
+    for (std::size_t k = 0; k <= n; ++k) A[(n + r) * N + r + k] = dense_entry(row_polynomial(g.rows[n - k]));
+  std::vector<CGAL::Gmpz> coeffs;
+  std::size_t Du = 0, Dv = 0;
+  if (!dense_polynomial_matrix_determinant(A, N, coeffs, Du, Dv)) return Polynomial_1<Integer>(0);
+  return Polynomial_1<Integer>(coeffs.begin(), coeffs.begin() + std::ptrdiff_t(Du + 1));
+}
+
+/// dim Q[s,t]/<F> from resultants (see (c) above), computed lazily: for two equations first an upper bound of
+/// deg Res, the exact degree on demand, and the count is an equality; for r >= 3 equations whose leading
+/// coefficients are pairwise coprime, dim Q[s,t]/<F> <= deg gcd_{i<j} Res_t(F_i, F_j), an upper bound only: at a
+/// root λ at most one leading coefficient vanishes, and for F_a with a unit leading coefficient in O = C[s]_(s-λ)
+/// the localized quotient is the cokernel of [F_b mod F_a]_b on the free module O[t]/(F_a), whose length is the
+/// order of the gcd of its maximal minors (Smith form), at most min_b ord_λ Res_t(F_a, F_b); every pair has a member
+/// with a unit leading coefficient.
 struct Quotient_dimension {
-  const Dense_Z *f = nullptr, *g = nullptr;  // in the chosen direction (t eliminated)
-  char direction = 0;                         // 't', 's', or 0 if unavailable
+  std::vector<const Dense_Z*> F;  // in the chosen direction (t eliminated)
+  char direction = 0;             // 't', 's', or 0 if unavailable
   int value = -1;
   bool exact = false;
+  bool equality = false;  // dim == deg Res (two equations); otherwise dim <= value
 
-  explicit Quotient_dimension(const std::vector<Dense_Z>& F, std::vector<Dense_Z>& transposed_storage) {
-    if (F.size() != 2) return;
-    transposed_storage = {transposed(F[0]), transposed(F[1])};
-    if (coprime_leading_coefficients(F[0], F[1])) {
-      f = &F[0], g = &F[1], direction = 't';
-    } else if (coprime_leading_coefficients(transposed_storage[0], transposed_storage[1])) {
-      f = &transposed_storage[0], g = &transposed_storage[1], direction = 's';
+  explicit Quotient_dimension(const std::vector<Dense_Z>& G, std::vector<Dense_Z>& transposed_storage) {
+    if (G.size() < 2) return;
+    transposed_storage.clear();
+    for (const auto& g : G) transposed_storage.push_back(transposed(g));
+    auto pairwise_coprime = [](const std::vector<Dense_Z>& H) {
+      for (std::size_t i = 0; i < H.size(); ++i)
+        for (std::size_t j = i + 1; j < H.size(); ++j)
+          if (!coprime_leading_coefficients(H[i], H[j])) return false;
+      return true;
+    };
+    const std::vector<Dense_Z>* chosen = nullptr;
+    if (pairwise_coprime(G)) {
+      chosen = &G, direction = 't';
+    } else if (pairwise_coprime(transposed_storage)) {
+      chosen = &transposed_storage, direction = 's';
     } else {
       return;
     }
-    value = resultant_degree(*f, *g, false);
+    for (const auto& g : *chosen) F.push_back(&g);
+    if (F.size() == 2) {
+      equality = true;
+      value = resultant_degree(*F[0], *F[1], false);
+    } else {
+      Polynomial_1<Integer> r(0);
+      for (std::size_t i = 0; i < F.size(); ++i)
+        for (std::size_t j = i + 1; j < F.size(); ++j) {
+          const Polynomial_1<Integer> q = resultant_polynomial(*F[i], *F[j]);
+          if (CGAL::is_zero(q)) continue;  // a common component of this pair: other pairs bound the dimension
+          r = CGAL::is_zero(r) ? q : CGAL::gcd(r, q);
+        }
+      value = CGAL::is_zero(r) ? -1 : r.degree();
+      exact = true;
+    }
     if (value < 0) direction = 0;  // Res = 0 (a common component): the count does not apply
   }
   bool available() const { return direction != 0; }
-  /// Proves dim == count (true) or dim != count (false).
+  /// Proves dim == count (true); false: dim != count (two equations) or unknown (more equations).
   bool equals(int count) {
-    if (count == value) return true;  // count <= dim <= deg Res <= value: equality throughout
+    if (count == value) return true;  // count <= dim <= value: equality throughout
     if (!exact) {
-      value = resultant_degree(*f, *g, true);
+      value = resultant_degree(*F[0], *F[1], true);
       exact = true;
     }
     return count == value;
@@ -551,7 +598,8 @@ inline Groebner_check check_basis(const std::vector<Dense_Z>& F, const std::vect
     if (!reduces_to_zero(integer_s_polynomial(BZ[k], BZ[k + 1]), BZ, L)) return Groebner_check::not_a_groebner_basis;
   }
   if (!dim.available()) return Groebner_check::dimension_unknown;  // (c)
-  return dim.equals(count) ? Groebner_check::certified : Groebner_check::dimension_mismatch;
+  if (dim.equals(count)) return Groebner_check::certified;
+  return dim.equality ? Groebner_check::dimension_mismatch : Groebner_check::dimension_unknown;
 }
 
 /// The coefficients of a reduced zero-dimensional basis mod p on its standard monomials: element k contributes its
@@ -612,9 +660,10 @@ Groebner_check check_lex_groebner_basis(const std::vector<Polynomial_2<NT>>& F, 
 
 /// Reduced lexicographic (t > s) Groebner basis of <F> ⊂ Q[s,t], sorted by increasing leading monomial, computed
 /// modulo word primes and certified over Q (see the comment above: (a), (b), (c)); never an unproved basis. When the
-/// dimension count (c) is not available (not two equations; common roots of the leading coefficients in both
-/// directions) or no candidate is certified within `max_primes` primes, the exact rational Buchberger algorithm
-/// `lex_groebner_basis` is used within `exact_budget` (Error beyond it). `certificate` (optional) tells how.
+/// dimension count (c) is not available (common roots of the leading coefficients in both directions; for three or
+/// more equations, a count below the resultant bound) or no candidate is certified within `max_primes` primes, the
+/// exact rational Buchberger algorithm `lex_groebner_basis` is used within `exact_budget` (Error beyond it;
+/// exact_budget = 0: Error at once). `certificate` (optional) tells how.
 template <class NT>
 std::vector<Lex_polynomial_2> modular_lex_groebner_basis(const std::vector<Polynomial_2<NT>>& F,
                                                          Groebner_certificate* certificate = nullptr,
@@ -713,6 +762,7 @@ std::vector<Lex_polynomial_2> modular_lex_groebner_basis(const std::vector<Polyn
           for (const auto& b : B) out.push_back(to_lex(b));
           return out;
         }
+        if (c == Groebner_check::dimension_unknown) break;  // r >= 3 equations, bound not sharp: exact algorithm
         grp.next_try = grp.count * 2;  // a wrong candidate: wait for many more primes
       }
     }

@@ -168,10 +168,21 @@ TEST_CASE("modular lex basis: no dimension count (common leading-coefficient roo
   CHECK(check_lex_groebner_basis(F, want) == Groebner_check::dimension_unknown);
   // within a budget too small for the exact algorithm: Error, never an unproved basis
   CHECK_THROWS_AS(modular_lex_groebner_basis(F, &c, 3), Error);
-  // three equations: no count either, the exact algorithm decides
+}
+
+TEST_CASE("modular lex basis of three equations: the resultant gcd bound", "[groebner]") {
+  // t - s^2, t^2 + s^2 - 2, t - 1 (leading coefficients 1): pairwise resultants (s^2 - 1)(s^2 + 2), s^2 - 1,
+  // s^2 - 1, gcd of degree 2 = the two points (+-1, 1): certified without the exact algorithm
+  Groebner_certificate c;
   CHECK(same_basis(modular_lex_groebner_basis(std::vector<P2>{t - s * s, t * t + s * s - 2, t - 1}, &c),
                    {lex({{1, 0, 2}, {-1, 0, 0}}), lex({{1, 1, 0}, {-1, 0, 0}})}));
+  CHECK_FALSE(c.exact_fallback);
+  CHECK(c.dimension == 2);
+  // common leading-coefficient roots (s t - 1 twice): the exact algorithm; with a zero budget, Error
+  const std::vector<P2> F{s * t - 1, s * t * t + s * s * t - 1, s * t + s + t - 2};
+  CHECK(same_basis(modular_lex_groebner_basis(F, &c), {lex({{1, 0, 2}, {-1, 0, 1}, {1, 0, 0}}), lex({{1, 1, 0}, {1, 0, 1}, {-1, 0, 0}})}));
   CHECK(c.exact_fallback);
+  CHECK_THROWS_AS(modular_lex_groebner_basis(F, &c, 0), Error);
 }
 
 TEST_CASE("certification rejects corrupted bases", "[groebner]") {

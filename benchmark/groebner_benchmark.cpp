@@ -1,0 +1,141 @@
+// The Groebner strategy (du-1989's third method: a reduced lexicographic basis, here multi-modular and certified
+// over Q, Groebner_bivariate.h) against the default method and Singular on the same generated systems: du-1989
+// protocol cells (3D rational and polynomial curves of degrees 3-2 .. 3-6) and planar pairs 2-2 .. 6-6, N problems
+// per cell with k = 2 known intersections, median ms per problem.
+//   groebner_benchmark [N=3] [singular=1] [timeout_s=60]
+// Singular (when installed) gets the system F_k = X1_k(s) W2(t) - X2_k(t) W1(s), k = 1..D, in the ring
+// (t, s) with lp, timed inside Singular (rtimer): modStd (modstd.lib, multi-modular, probabilistic final test) and
+// std in lp; one Singular process per system and algorithm, killed after timeout_s (reported as ">timeout").
+// Our groebner strategy computes the basis of the pair (F1, F2) in both directions (R(s) and T(t)), certified, and
+// in space takes the gcd with the other pairs' resultants (Curve_intersection.h strategy_R).
+#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/Groebner_bivariate.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace bezoutian;
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return -1;
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+template <int D>
+double time_ms(const Curve_problem<D>& p, Curve_intersection_method m, std::size_t& points) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = intersect_curves(p.curve_1, p.curve_2, m);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  if (r.points.size() < p.known.size()) std::printf("ERROR: missing intersections\n");
+  points = r.points.size();
+  return ms;
+}
+
+template <int D>
+std::string singular_ideal(const Curve_problem<D>& p) {
+  const auto H1 = internal::integer_power_form(p.curve_1), H2 = internal::integer_power_form(p.curve_2);
+  std::ostringstream o;
+  for (int k = 1; k <= D; ++k) {
+    const auto F = internal::cross_term(H1[k], H2[0], H2[k], H1[0]);
+    std::ostringstream f;
+    bool first = true;
+    for (int j = 0; j <= F.degree(); ++j)
+      for (int i = 0; !CGAL::is_zero(F[j]) && i <= F[j].degree(); ++i)
+        if (!CGAL::is_zero(F[j][i])) {
+          f << (first ? "" : "+") << "(" << F[j][i] << ")*s^" << i << "*t^" << j;
+          first = false;
+        }
+    o << (k > 1 ? ", " : "") << (first ? "0" : f.str());
+  }
+  return o.str();
+}
+
+// ms inside Singular for one system, -1 if Singular is missing, -2 on timeout or failure.
+double singular_ms(const std::string& ideal, bool modstd, int timeout_s) {
+  static const bool installed = std::system("command -v Singular > /dev/null 2>&1") == 0;
+  if (!installed) return -1;
+  const std::string script = "/tmp/bezoutian_groebner_bench.sing", out = "/tmp/bezoutian_groebner_bench.out";
+  {
+    std::ofstream f(script);
+    f << "system(\"--ticks-per-sec\",1000);\n";
+    if (modstd) f << "LIB \"modstd.lib\";\n";
+    f << "ring r=0,(t,s),lp;\noption(redSB);\nideal I = " << ideal << ";\nint t0 = rtimer;\n"
+      << (modstd ? "ideal G = modStd(I);\n" : "ideal G = std(I);\n") << "\"T \" + string(rtimer - t0);\nquit;\n";
+  }
+  if (std::system(("timeout " + std::to_string(timeout_s) + " Singular -q " + script + " > " + out + " 2>&1").c_str()) != 0)
+    return -2;
+  std::ifstream in(out);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("T ", 0) == 0) return std::atof(line.c_str() + 2);
+  return -2;
+}
+
+std::string cell(double ms) {
+  char b[32];
+  if (ms == -1) return "     -";
+  if (ms == -2) return "  >tmo";
+  std::snprintf(b, sizeof b, "%8.1f", ms);
+  return b;
+}
+
+template <int D>
+void run_cell(int n1, int n2, bool rational, int N, bool singular, int timeout_s) {
+  std::vector<double> def, gb, ms, lp;
+  bool ms_timeout = false, lp_timeout = false;
+  for (int i = 0; i < N; ++i) {
+    Curve_problem_parameters par;
+    par.degree_1 = n1;
+    par.degree_2 = n2;
+    par.intersections = 2;
+    par.rational = rational;
+    par.range = 16;
+    par.seed = 7000000UL + 10000UL * n1 + 100UL * n2 + 10UL * i + (rational ? 1 : 0) + (D == 3 ? 5 : 0);
+    const auto p = generate_curve_problem<D>(par);
+    std::size_t a = 0, b = 0;
+    def.push_back(time_ms(p, Curve_intersection_method::default_method, a));
+    gb.push_back(time_ms(p, Curve_intersection_method::groebner, b));
+    if (a != b) std::printf("ERROR: the strategies disagree\n");
+    if (singular) {
+      const std::string I = singular_ideal(p);
+      const double x = singular_ms(I, true, timeout_s), y = singular_ms(I, false, timeout_s);
+      if (x >= 0) ms.push_back(x);
+      if (y >= 0) lp.push_back(y);
+      ms_timeout = ms_timeout || x == -2;
+      lp_timeout = lp_timeout || y == -2;
+    }
+  }
+  const double mdef = median(def), mgb = median(gb);
+  const double mms = ms_timeout ? -2 : (singular ? median(ms) : -1), mlp = lp_timeout ? -2 : (singular ? median(lp) : -1);
+  std::printf("  %dD %s %d-%d  default %s  groebner %s  (x%.0f)  | Singular modStd %s  std lp %s", D,
+              rational ? "rational  " : "polynomial", n1, n2, cell(mdef).c_str(), cell(mgb).c_str(), mgb / mdef,
+              cell(mms).c_str(), cell(mlp).c_str());
+  if (mms > 0) std::printf("  groebner/modStd %.2f", mgb / mms);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int N = argc > 1 ? std::atoi(argv[1]) : 3;
+  const bool singular = argc > 2 ? std::atoi(argv[2]) != 0 : true;
+  const int timeout_s = argc > 3 ? std::atoi(argv[3]) : 60;
+  std::printf("Groebner strategy, %d problems per cell (k = 2), median ms per problem; Singular timeout %d s\n", N,
+              timeout_s);
+  for (int rat = 1; rat >= 0; --rat)
+    for (int n2 = 2; n2 <= 6; ++n2) run_cell<3>(3, n2, rat == 1, N, singular, timeout_s);
+  for (int rat = 1; rat >= 0; --rat)
+    for (int n = 2; n <= 6; ++n) run_cell<2>(n, n, rat == 1, N, singular, timeout_s);
+  return 0;
+}
