@@ -89,6 +89,8 @@ TEST_CASE("space shape basis: the constructed intersections, a divisor of CGAL's
         Integer d;
         P1::pseudo_division(G, g, q, r, d);
         CHECK(CGAL::is_zero(r));
+        // and without the factors W1^j (common zeros at infinity) it is g itself: no other common root
+        CHECK(internal::divide_out(G, A[0]).degree() == g.degree());
         ++checked;
       }
   CHECK(checked == 38);
@@ -249,4 +251,40 @@ TEST_CASE("two partners for one parameter (no shape basis in s) and a tangency i
   CHECK((rt.points[0].s == Rational(1, 2) && rt.points[0].t == Rational(1, 2)));
   CHECK(rt.points[0].kind == Curve_intersection_kind::tangent);
   require_same_as_exact(para, line);
+}
+
+TEST_CASE("space curves on a common plane: the planar answer (irrational points)", "[curve_intersection][space]") {
+  // random plane curves lifted to the plane z = x + 2y + 1/3 meet exactly where the plane curves meet, mostly at
+  // irrational parameters; the planar subresultant strategy is the reference (a different algorithm)
+  auto lift = [](const Curve2& c) {
+    std::vector<Curve3::Homogeneous_point> net;
+    for (const auto& h : c.homogeneous_control_points()) net.push_back({h[0], h[1], h[2], h[1] + 2 * h[2] + h[0] / 3});
+    return Curve3::from_homogeneous(net);
+  };
+  int settled = 0, irrational = 0;
+  for (int n = 2; n <= 3; ++n)
+    for (int i = 0; i < 6; ++i) {
+      Curve_problem_parameters par;
+      par.degree_1 = par.degree_2 = n;
+      par.intersections = 0;
+      par.rational = i % 2 == 1;
+      par.range = 16;
+      par.seed = 31 + 100 * n + i;
+      const auto p = generate_curve_problem<2>(par);
+      INFO("n=" << n << " i=" << i);
+      const Curve3 a = lift(p.curve_1), b = lift(p.curve_2);
+      const auto r2 = intersect_curves(p.curve_1, p.curve_2, Curve_intersection_method::subresultant);
+      const auto r3 = intersect_curves(a, b);
+      REQUIRE(r3.points.size() == r2.points.size());
+      for (std::size_t j = 0; j < r2.points.size(); ++j) {
+        CHECK(r3.points[j].s == r2.points[j].s);
+        CHECK(r3.points[j].t == r2.points[j].t);
+        CHECK(r3.points[j].kind == r2.points[j].kind);
+        irrational += !r3.points[j].s.is_rational();
+      }
+      Curve_intersection_result q;
+      settled += internal::Curve_intersection_engine<3>(a, b, Curve_intersection_method::default_method).space_path(q);
+    }
+  CHECK(irrational >= 5);
+  CHECK(settled >= 6);  // shape bases of degree n^2 = 4, 9 (larger ones need too many primes: exact path)
 }
