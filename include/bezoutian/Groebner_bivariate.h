@@ -767,13 +767,23 @@ std::vector<Lex_polynomial_2> modular_lex_groebner_basis(const std::vector<Polyn
       }
     }
     if (grp.count < grp.next_try) continue;
-    // rational reconstruction, starting with the value that failed last time
+    // rational reconstruction, starting with the value that failed last time. The coefficients share most of
+    // their denominators: each value u is multiplied by the lcm L of the denominators found so far, so that
+    // Wang's Euclidean algorithm mostly stops after a step or two (u L = n/d, value n/(d L)).
     std::vector<Rational> cand(values.size());
     bool ok = true;
+    Integer den_lcm(1), u;
     for (std::size_t v = 0; v < values.size() && ok; ++v) {
       const std::size_t w = (grp.first_failure + v) % values.size();
-      ok = rational_reconstruction(grp.crt.symmetric(w), grp.crt.product(), cand[w]);
-      if (!ok) grp.first_failure = w;
+      u = grp.crt.symmetric(w) * den_lcm;
+      ok = rational_reconstruction(u, grp.crt.product(), cand[w]);
+      if (!ok) {
+        grp.first_failure = w;
+        break;
+      }
+      if (den_lcm != 1) cand[w] /= Rational(den_lcm);
+      const Integer d = cand[w].denominator();
+      if (d != 1) den_lcm *= CGAL::integral_division(d, CGAL::gcd(d, den_lcm));
     }
     if (ok) {
       grp.candidate = std::move(cand);
