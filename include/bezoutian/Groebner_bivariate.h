@@ -1,8 +1,10 @@
-// Lexicographic Groebner bases of bivariate polynomial ideals over Q (Buchberger's algorithm with the coprime
-// leading monomial criterion), and the eliminant they give: du-1989 §3.5 (Groebner bases) applied to the curve
-// intersection system as in its §4 ("the third method"). The reduced lex basis with t > s contains one
-// polynomial in s alone, the generator of the elimination ideal I ∩ Q[s], whose roots are exactly the
-// s-coordinates of the common complex zeros.
+// Lexicographic Groebner bases of bivariate polynomial ideals over Q, and the eliminant they give: du-1989 §3.5
+// (Groebner bases) applied to the curve intersection system as in its §4 ("the third method"). The reduced lex
+// basis with t > s contains one polynomial in s alone, the generator of the elimination ideal I ∩ Q[s], whose roots
+// are exactly the s-coordinates of the common complex zeros. Two algorithms: `lex_groebner_basis`, Buchberger's
+// algorithm in exact rational arithmetic (the reference, and the fallback), and `modular_lex_groebner_basis`, the
+// basis modulo word primes lifted by Chinese remaindering and rational reconstruction and then certified over Q
+// (the one `groebner_eliminant` and the groebner strategy of Curve_intersection.h use).
 #ifndef BEZOUTIAN_GROEBNER_BIVARIATE_H
 #define BEZOUTIAN_GROEBNER_BIVARIATE_H
 
@@ -206,7 +208,7 @@ inline std::vector<Lex_polynomial_2> lex_groebner_basis(const std::vector<Lex_po
 //    (b) B is a Groebner basis: the S-polynomials of consecutive elements (sorted by leading monomial) reduce to 0.
 //        In two variables the others are not needed: for k < l < m, LM(l) = s^i_l t^j_l divides
 //        lcm(LM(k), LM(m)) = s^i_k t^j_m (j increasing, i decreasing along a reduced staircase), so Buchberger's
-//        chain criterion removes (k, m) (CLO, Ideals, Varieties, and Algorithms, §2.10 Proposition 14);
+//        chain criterion removes (k, m) (CLO, Ideals, Varieties, and Algorithms, §2.10);
 //        pairs with coprime leading monomials are removed by the first criterion;
 //    (c) <B> ⊆ I by a dimension count: (a) gives dim Q[s,t]/I >= dim Q[s,t]/<B> = #standard monomials of B.
 //        If gcd(lc_t F1, lc_t F2) = 1 (no common point at infinity in the t direction) then

@@ -189,9 +189,9 @@ TEST_CASE("thousands of generated problems, 2D and 3D, degrees 2-6, rational and
   CHECK(problems == 464 * BEZOUTIAN_GENERATED_REPETITIONS);  // 2320 problems by default
 }
 
-// du-1989's third method: the eliminant from a reduced lexicographic Groebner basis. Exact rational Buchberger is
-// only practical for small degrees, so the agreement is checked there (identical exact answers, multiplicities
-// and kinds), plus tangencies and an identity: the eliminant of (t - s^2, t^2 + s^2 - 2) is s^4 + s^2 - 2.
+// du-1989's third method: the eliminant from a reduced lexicographic Groebner basis (multi-modular, certified over
+// Q; degrees up to 6 in test/core/groebner_modular_test.cpp). Here: identical exact answers, multiplicities and kinds
+// on small problems, tangencies, and an identity: the eliminant of (t - s^2, t^2 + s^2 - 2) is s^4 + s^2 - 2.
 TEST_CASE("groebner strategy: the lex basis eliminant, and identical answers on small problems",
           "[curve_intersection][groebner]") {
   using P2 = Polynomial_2<Integer>;

@@ -16,7 +16,7 @@ namespace internal {
 /// |n| <= B and 0 < d <= B, B = floor(sqrt(m/2)). Such a fraction is unique if it exists (two of them would give
 /// |n d' - n' d| < m, a multiple of m, hence n/d = n'/d'). The extended Euclidean algorithm on (m, u) stops at the
 /// first remainder r_k <= B; the candidate is r_k / t_k (Bezout cofactor t_k of u), accepted if |t_k| <= B and
-/// gcd(r_k, t_k) = 1 (Wang 1981; von zur Gathen and Gerhard, Modern Computer Algebra, §5.10, Theorem 5.26).
+/// gcd(r_k, t_k) = 1 (Wang 1981; von zur Gathen and Gerhard, Modern Computer Algebra, §5.10).
 /// Returns false if no such fraction exists.
 inline bool rational_reconstruction(const CGAL::Gmpz& u, const CGAL::Gmpz& m, CGAL::Gmpq& out) {
   mpz_t r0, r1, t0, t1, q, tmp, bound;
