@@ -376,8 +376,8 @@ inline Polynomial_1<Integer> resultant_polynomial(const Dense_Z& f, const Dense_
   return Polynomial_1<Integer>(coeffs.begin(), coeffs.begin() + std::ptrdiff_t(Du + 1));
 }
 
-/// dim Q[s,t]/<F> from resultants (see (c) above), computed lazily: for two equations first an upper bound of
-/// deg Res, the exact degree on demand, and the count is an equality; for r >= 3 equations whose leading
+/// dim Q[s,t]/<F> from resultants (see (c) above): for two equations the exact deg Res (multi-modular determinant),
+/// and the count is an equality; for r >= 3 equations whose leading
 /// coefficients are pairwise coprime, dim Q[s,t]/<F> <= deg gcd_{i<j} Res_t(F_i, F_j), an upper bound only: at a
 /// root λ at most one leading coefficient vanishes, and for F_a with a unit leading coefficient in O = C[s]_(s-λ)
 /// the localized quotient is the cokernel of [F_b mod F_a]_b on the free module O[t]/(F_a), whose length is the
@@ -410,8 +410,11 @@ struct Quotient_dimension {
     }
     for (const auto& g : *chosen) F.push_back(&g);
     if (F.size() == 2) {
+      // exact degree (the max-weight bound alone would not prove Res != 0: coprime leading coefficients do not
+      // exclude a common factor of positive degree in t)
       equality = true;
-      value = resultant_degree(*F[0], *F[1], false);
+      value = resultant_degree(*F[0], *F[1], true);
+      exact = true;
     } else {
       Polynomial_1<Integer> r(0);
       for (std::size_t i = 0; i < F.size(); ++i)
@@ -426,15 +429,9 @@ struct Quotient_dimension {
     if (value < 0) direction = 0;  // Res = 0 (a common component): the count does not apply
   }
   bool available() const { return direction != 0; }
-  /// Proves dim == count (true); false: dim != count (two equations) or unknown (more equations).
-  bool equals(int count) {
-    if (count == value) return true;  // count <= dim <= value: equality throughout
-    if (!exact) {
-      value = resultant_degree(*F[0], *F[1], true);
-      exact = true;
-    }
-    return count == value;
-  }
+  /// Proves dim == count (true); false: dim != count (two equations) or unknown (more equations). The candidate
+  /// passed (a), so count <= dim <= value: equality throughout.
+  bool equals(int count) const { return count == value; }
 };
 
 /// The k-th word prime (word_prime's order), cached: word_prime searches anew beyond its table of 64.

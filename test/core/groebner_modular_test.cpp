@@ -170,6 +170,18 @@ TEST_CASE("modular lex basis: no dimension count (common leading-coefficient roo
   CHECK_THROWS_AS(modular_lex_groebner_basis(F, &c, 3), Error);
 }
 
+TEST_CASE("modular lex basis: a common component (Res_t = 0 although the leading coefficients are coprime)",
+          "[groebner]") {
+  // (t - s)(t + 1) and (t - s) t generate <t - s>: positive-dimensional, no count; the exact algorithm decides
+  const std::vector<P2> F{(t - s) * (t + 1), (t - s) * t};
+  Groebner_certificate c;
+  CHECK(same_basis(modular_lex_groebner_basis(F, &c), {lex({{1, 1, 0}, {-1, 0, 1}})}));
+  CHECK(c.exact_fallback);
+  CHECK(CGAL::is_zero(groebner_eliminant(F)));
+  // the point (0, 0) of the common line: I ⊆ <s, t>, a Groebner basis, but nothing bounds dim Q[s,t]/I
+  CHECK(check_lex_groebner_basis(F, {lex({{1, 0, 1}}), lex({{1, 1, 0}})}) == Groebner_check::dimension_unknown);
+}
+
 TEST_CASE("modular lex basis of three equations: the resultant gcd bound", "[groebner]") {
   // t - s^2, t^2 + s^2 - 2, t - 1 (leading coefficients 1): pairwise resultants (s^2 - 1)(s^2 + 2), s^2 - 1,
   // s^2 - 1, gcd of degree 2 = the two points (+-1, 1): certified without the exact algorithm
