@@ -553,6 +553,7 @@ class Curve_intersection_engine {
       for (int i = 0; i <= psi.degree(); ++i)
         if (!CGAL::is_zero(psi[i])) q = Rational(N[i]) / psi[i];
       const P1 G = internal::integer_multiple(g);
+      P1 P;  // vanishes at psi(sigma) for every root sigma of g (computed once, if an irrational sigma needs it)
       std::vector<Rational> s_enc_lo, s_enc_hi, t_enc_lo, t_enc_hi;  // enclosures of (sigma, psi(sigma))
       std::vector<Algebraic_real> ts;
       std::vector<char> matched(solver.found.size(), 0);
@@ -567,8 +568,9 @@ class Curve_intersection_engine {
           ts.push_back(Algebraic_real(t));
           continue;
         }
-        // irrational sigma: t = psi(sigma) is a root of P(t) = Res_s(g(s), den t - N(s)); its isolating interval
+        // irrational sigma: t = psi(sigma) is a root of P(t) = Res_s(g(s), q t - N(s)); its isolating interval
         // from an MPFI enclosure of psi on sigma's refined interval
+        if (CGAL::is_zero(P) && !CGAL::is_zero(psi)) P = partner_polynomial(G, N, q);
         bool ok = false;
         for (int bits = 64; bits <= 1024 && !ok; bits *= 2) {
           Integer p2(1);
@@ -580,7 +582,7 @@ class Curve_intersection_engine {
           const I v = I::horner(N, u) / I::hull(q, q, prec);
           const Rational vlo = v.lower(), vhi = v.upper();
           try {
-            Algebraic_real t = CGAL::is_zero(psi) ? Algebraic_real(0) : Algebraic_real(partner_polynomial(G, N, q), vlo, vhi);
+            Algebraic_real t = CGAL::is_zero(psi) ? Algebraic_real(0) : Algebraic_real(P, vlo, vhi);
             s_enc_lo.push_back(x.lower());
             s_enc_hi.push_back(x.upper());
             t_enc_lo.push_back(vlo);
@@ -593,7 +595,7 @@ class Curve_intersection_engine {
         if (!ok) return false;
       }
       CI_TICK("space partners");
-      // every box must hold a root (sigma, psi(sigma)); an irrational one is refined while its enclosure straddles
+      // every box must hold a root (sigma, psi(sigma)): enclosures inside the box, or exact comparisons with its ends
       for (std::size_t k = 0; k < solver.found.size(); ++k) {
         const auto& b = solver.found[k];
         const Rational bs0(b.s_lo), bs1(b.s_hi), bt0(b.t_lo), bt1(b.t_hi);
