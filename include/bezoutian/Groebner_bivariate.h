@@ -282,15 +282,6 @@ Dense_Z primitive_integer_dense(const Polynomial_2<NT>& f) {
   return r;
 }
 
-inline Dense_Q to_rational_dense(const Dense_Z& f) {
-  Dense_Q r;
-  for (const auto& row : f.rows) {
-    r.rows.emplace_back();
-    for (const auto& x : row) r.rows.back().push_back(Rational(x));
-  }
-  return r;
-}
-
 inline Dense_Q to_dense(const Lex_polynomial_2& f) {
   Dense_Q r;
   if (f.is_zero()) return r;
