@@ -10,6 +10,7 @@
 #include <bezoutian/internal/bernstein_descartes.h>
 #include <bezoutian/internal/modular_arithmetic.h>
 #include <bezoutian/internal/modular_polynomial.h>
+#include <bezoutian/internal/rational_reconstruction.h>
 #include <bezoutian/number_types.h>
 
 #include <CGAL/Polynomial.h>
@@ -388,45 +389,6 @@ inline bool verify(const std::array<Polynomial_1<Integer>, 4>& A, const std::arr
 
 }  // namespace space_shape
 
-/// Fraction n/d = u modulo m with |n|, d <= sqrt(m/2) (Wang's rational reconstruction by the extended Euclidean
-/// algorithm; unique if it exists); false if there is none.
-inline bool space_shape_rational_reconstruction(const Integer& u, const Integer& m, Rational& out) {
-  mpz_t r0, r1, t0, t1, q, tmp, bound;
-  mpz_inits(r0, r1, t0, t1, q, tmp, bound, nullptr);
-  mpz_set(r0, m.mpz());
-  mpz_fdiv_r(r1, u.mpz(), m.mpz());
-  mpz_set_ui(t0, 0);
-  mpz_set_ui(t1, 1);
-  mpz_fdiv_q_2exp(bound, m.mpz(), 1);
-  mpz_sqrt(bound, bound);
-  while (mpz_cmp(r1, bound) > 0) {
-    mpz_fdiv_qr(q, tmp, r0, r1);
-    mpz_swap(r0, r1);
-    mpz_swap(r1, tmp);
-    mpz_mul(tmp, q, t1);
-    mpz_sub(tmp, t0, tmp);
-    mpz_swap(t0, t1);
-    mpz_swap(t1, tmp);
-  }
-  bool ok = mpz_sgn(t1) != 0 && mpz_cmpabs(t1, bound) <= 0;
-  if (ok) {
-    mpz_gcd(tmp, r1, t1);
-    ok = mpz_cmp_ui(tmp, 1) == 0;
-  }
-  if (ok) {
-    if (mpz_sgn(t1) < 0) {
-      mpz_neg(t1, t1);
-      mpz_neg(r1, r1);
-    }
-    Rational v;
-    mpq_set_num(v.mpq(), r1);
-    mpq_set_den(v.mpq(), t1);
-    out = v;
-  }
-  mpz_clears(r0, r1, t0, t1, q, tmp, bound, nullptr);
-  return ok;
-}
-
 /// \brief Shape basis of two space curves given by integer homogeneous power forms A = (W, X, Y, Z)(s),
 /// B = (W, X, Y, Z)(t) (see Space_shape_basis), or false when none is found with at most `max_primes` word primes
 /// (the common points do not have distinct s, several t per s, zero divisors, coefficients too large...).
@@ -439,7 +401,7 @@ inline bool space_shape_basis(const std::array<Polynomial_1<Integer>, 4>& A, con
   int degree = -1;
   Incremental_chinese_remainder crt;
   for (int i = 0, used = 0, failures = 0; used < max_primes && failures < 3; ++i) {
-    const u64 p = word_prime(std::size_t(i) + 7);  // (the first primes are also used by the determinant engine)
+    const u64 p = word_prime(std::size_t(i));
     const Montgomery_modulus M(p);
     std::array<Modular_polynomial, 4> Am, Bm;
     for (int k = 0; k < 4; ++k) {
@@ -475,8 +437,8 @@ inline bool space_shape_basis(const std::array<Polynomial_1<Integer>, 4>& A, con
     std::vector<Rational> gq(d + 1), pq(d);
     bool ok = true;
     for (int e = 0; e < d && ok; ++e)
-      ok = space_shape_rational_reconstruction(crt.symmetric(e), crt.product(), gq[e]) &&
-           space_shape_rational_reconstruction(crt.symmetric(d + e), crt.product(), pq[e]);
+      ok = rational_reconstruction(crt.symmetric(e), crt.product(), gq[e]) &&
+           rational_reconstruction(crt.symmetric(d + e), crt.product(), pq[e]);
     if (!ok) continue;
     gq[d] = Rational(1);
     while (!pq.empty() && CGAL::is_zero(pq.back())) pq.pop_back();
