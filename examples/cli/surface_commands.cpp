@@ -69,15 +69,17 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     json jc;
     jc["closed"] = c.closed;
     jc["isolated_point"] = c.isolated_point;
-    json pts = json::array(), partner = json::array(), p3 = json::array(), genuine = json::array(), arcs = json::array();
+    json pts = json::array(), partner = json::array(), p3 = json::array(), genuine = json::array(), arcs = json::array(),
+         proved = json::array();
     for (std::size_t ei : c.edges) {
       const auto& arc = L.arcs[ei];
-      arcs.push_back({{"from", pts.size()}, {"count", arc.points.size()}});
+      arcs.push_back({{"from", pts.size()}, {"count", arc.points.size()}, {"undecided_fraction", arc.undecided_fraction}});
       for (const auto& q : arc.points) {
         pts.push_back({q.projection[0], q.projection[1]});
         partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
         p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
         genuine.push_back(q.genuine);
+        proved.push_back(q.status_proved);
       }
     }
     if (c.isolated_point && !c.vertices.empty()) {
@@ -89,6 +91,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     jc["partner_points"] = partner;
     jc["points_3d"] = p3;
     jc["genuine"] = genuine;
+    jc["genuine_proved"] = proved;  // the genuine flag above is proved (true) or floating point only (false)
     comps.push_back(jc);
   }
   j["components"] = comps;
@@ -241,17 +244,19 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
             << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
   for (std::size_t i = 0; i < T.components.size(); ++i) {
     const auto& c = T.components[i];
-    std::size_t genuine = 0, total = 0;
+    std::size_t genuine = 0, total = 0, proved = 0;
     double worst = 0;
     for (auto ei : c.edges)
       for (const auto& q : L.arcs[ei].points) {
         ++total;
         genuine += q.genuine;
+        proved += q.status_proved;
         if (q.lifted && std::isfinite(q.residual)) worst = std::max(worst, q.residual);
       }
     std::cout << "  component " << i << ": " << (c.isolated_point ? "isolated point" : c.closed ? "closed loop" : "open arc(s)")
               << ", " << c.edges.size() << " arc(s), " << genuine << "/" << total
-              << " traced points with partner in the domain, max residual " << worst << "\n";
+              << " traced points with partner in the domain (" << proved << "/" << total
+              << " genuine/phantom status proved), max residual " << worst << "\n";
   }
   const auto old_precision = std::cout.precision(17);
   for (std::size_t vi = 0; vi < T.vertices.size(); ++vi) {

@@ -41,10 +41,30 @@ struct Curve_topology_vertex {
   bool on_boundary = false;
 };
 
+/// A piece of an edge inside one cell of the subdivision where the curve is proved to be a graph: for
+/// graph_axis 0 every line u = c meets the curve inside `cell` at most once (v = g(u), dD/dv != 0 on the cell),
+/// for graph_axis 1 every line v = c does. graph_axis -1: a half-branch inside the box of a singular point (not a
+/// proved graph). The piece runs through polyline[first .. last]; its end points are crossings of the cell's
+/// edges (or the singular point) with the enclosures first_box, last_box = {u_lo, u_hi, v_lo, v_hi}.
+struct Curve_topology_piece {
+  Parameter_box cell;
+  int graph_axis = -1;
+  std::size_t first = 0, last = 0;
+  std::array<double, 4> first_box{}, last_box{};
+  /// graph_axis -1: which end (0: first, 1: last) is the singular point; the other end is a crossing of the cell's
+  /// edge, with its exact isolating box (degenerate along the edge's line; the interval along the line holds no
+  /// other root of D restricted to that line) and whether that line is vertical (u = const).
+  int singular_end = -1;
+  Parameter_box crossing;
+  bool crossing_on_vertical_line = false;
+};
+
 /// An arc of the curve inside the box between two vertices, with certified sample points along it.
 struct Curve_topology_edge {
   std::size_t source = 0, target = 0;
   std::vector<std::array<double, 2>> polyline;  ///< from source to target
+  /// The cells the edge runs through, in order (filled by the subdivision; empty from CGAL's curve analysis).
+  std::vector<Curve_topology_piece> pieces;
 };
 
 /// A connected component of (D = 0) ∩ box.

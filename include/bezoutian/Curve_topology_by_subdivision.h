@@ -147,14 +147,6 @@ class Subdivision_topology {
     // the splits are convex combinations (interval widths do not grow), so after the conversion the grids need
     // only enough bits to separate the values met near the curve: 144 bits, much cheaper than root_prec_
     prec_ = std::min<mpfr_prec_t>(root_prec_, 144);
-    // scaled double copy of D for sample points: coefficient * 2^-bits
-    scaled_.assign(std::size_t(a_ + 1) * (b_ + 1), 0.0L);
-    for (int j = 0; j <= D.degree(); ++j)
-      for (int i = 0; i <= D[j].degree(); ++i) {
-        long e = 0;
-        const double m = mpz_get_d_2exp(&e, D[j][i].mpz());
-        scaled_[std::size_t(i) * (b_ + 1) + j] = std::ldexp((long double)m, int(e - bits));
-      }
   }
 
   Subdivision_topology_result run() {
@@ -247,6 +239,8 @@ class Subdivision_topology {
   struct Arc {
     std::size_t n0, n1;                          // nodes, ordered by the graph coordinate
     std::vector<std::array<double, 2>> inner;    // sample points from n0 to n1 (exclusive)
+    Parameter_box cell;                          // the leaf box holding the arc
+    int graph_axis = -1;                         // 0: a graph v = g(u) in cell, 1: u = g(v), -1: singular box
   };
   struct Line {
     std::vector<Isolated_root> roots;  // on the whole domain range of the other variable
@@ -581,7 +575,8 @@ class Subdivision_topology {
     if (cr.size() % 2 != 0) return false;  // cannot happen for a simple box; be safe and subdivide
     std::sort(cr.begin(), cr.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
     for (std::size_t k = 0; k + 1 < cr.size(); k += 2) {
-      Arc arc{node(cr[k].vertical, cr[k].c, cr[k].index), node(cr[k + 1].vertical, cr[k + 1].c, cr[k + 1].index), {}};
+      Arc arc{node(cr[k].vertical, cr[k].c, cr[k].index), node(cr[k + 1].vertical, cr[k + 1].c, cr[k + 1].index), {},
+              Parameter_box{B.u0, B.u1, B.v0, B.v1}, by_u ? 0 : 1};
       sample_arc(B, by_u, cr[k].position, cr[k + 1].position, arc.inner);
       arcs_.push_back(arc);
     }
@@ -940,7 +935,7 @@ class Subdivision_topology {
     const std::size_t ps = node_singular(singular_.size() - 1);
     for (const Crossing& c : cr) {
       const std::size_t n = node(c.vertical, c.c, c.index);
-      Arc arc{n, ps, {}};
+      Arc arc{n, ps, {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
       const Curve_topology_vertex q = vertex_of(n);
       const long double qx = (q.u - CGAL::to_double(B.u0)) / CGAL::to_double(wu),
                         qy = (q.v - CGAL::to_double(B.v0)) / CGAL::to_double(wv);
@@ -976,39 +971,53 @@ class Subdivision_topology {
   // (v = const) with the curve, by bisection.
   void sample_arc(const Box& B, bool by_u, const Algebraic_real& p0, const Algebraic_real& p1,
                   std::vector<std::array<double, 2>>& out) const {
+    // Bisection on the sign of D along the line through each sample abscissa, evaluated from the box's double
+    // Bernstein grid by de Casteljau's algorithm (stable; the power form cancels catastrophically at high degree
+    // and put samples on the box edge). The box is simple in this direction: one sign change on each line.
     const double x0 = p0.to_double(), x1 = p1.to_double();
-    const long double lo = CGAL::to_double(by_u ? B.v0 : B.u0), hi = CGAL::to_double(by_u ? B.v1 : B.u1);
-    std::vector<long double> c;  // D on the segment: a polynomial in the other variable
+    const Double_bernstein_grid& G = *B.fast;
+    const int nx = by_u ? G.a() : G.b(), ny = by_u ? G.b() : G.a();
+    const double gx0 = CGAL::to_double(by_u ? B.u0 : B.v0), gx1 = CGAL::to_double(by_u ? B.u1 : B.v1);
+    const double lo = CGAL::to_double(by_u ? B.v0 : B.u0), hi = CGAL::to_double(by_u ? B.v1 : B.u1);
+    std::vector<double> c(std::size_t(ny + 1)), w(std::size_t(std::max(nx, ny) + 1));
+    auto casteljau = [&](std::size_t n, double t) {  // value at t of the Bernstein coefficients w[0..n]
+      for (std::size_t r = 1; r <= n; ++r)
+        for (std::size_t k = 0; k + r <= n; ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
+      return w[0];
+    };
     for (int k = 1; k < o_.samples_per_arc; ++k) {
-      const long double x = x0 + (x1 - x0) * (long double)k / o_.samples_per_arc;
-      c.assign(std::size_t(by_u ? b_ + 1 : a_ + 1), 0.0L);
-      if (by_u) {  // c_j = sum_i D_ij x^i
-        for (int j = 0; j <= b_; ++j) {
-          long double t = 0;
-          for (int i = a_; i >= 0; --i) t = t * x + scaled_[std::size_t(i) * (b_ + 1) + j];
-          c[std::size_t(j)] = t;
-        }
-      } else {  // c_i = sum_j D_ij x^j
-        for (int i = 0; i <= a_; ++i) {
-          long double t = 0;
-          for (int j = b_; j >= 0; --j) t = t * x + scaled_[std::size_t(i) * (b_ + 1) + j];
-          c[std::size_t(i)] = t;
-        }
+      const double x = x0 + (x1 - x0) * double(k) / o_.samples_per_arc;
+      const double tx = std::min(1.0, std::max(0.0, (x - gx0) / (gx1 - gx0)));
+      for (int j = 0; j <= ny; ++j) {  // coefficients along the line: D(x, .) in the Bernstein basis of the box
+        for (int i = 0; i <= nx; ++i) w[std::size_t(i)] = by_u ? G.at(i, j) : G.at(j, i);
+        c[std::size_t(j)] = casteljau(std::size_t(nx), tx);
       }
-      auto f = [&](long double y) {
-        long double r = 0;
-        for (std::size_t k2 = c.size(); k2-- > 0;) r = r * y + c[k2];
-        return r;
+      auto f = [&](double t) {
+        std::copy(c.begin(), c.end(), w.begin());
+        return casteljau(std::size_t(ny), t);
       };
-      long double a = lo, b = hi, fa = f(a);
-      for (int it = 0; it < 64; ++it) {
-        const long double m = 0.5L * (a + b), fm = f(m);
-        if ((fm < 0) == (fa < 0)) a = m, fa = fm;
-        else b = m;
+      double a = 0, b = 1;
+      const double fa = f(a);
+      for (int it = 0; it < 60; ++it) {
+        const double m = 0.5 * (a + b), fm = f(m);
+        if ((fm < 0) == (fa < 0))
+          a = m;
+        else
+          b = m;
       }
-      const double y = double(0.5L * (a + b));
-      out.push_back(by_u ? std::array<double, 2>{double(x), y} : std::array<double, 2>{y, double(x)});
+      const double y = lo + 0.5 * (a + b) * (hi - lo);
+      out.push_back(by_u ? std::array<double, 2>{x, y} : std::array<double, 2>{y, x});
     }
+  }
+
+  // Enclosure {u_lo, u_hi, v_lo, v_hi} of a node (outward-rounded doubles; exact line coordinates enclosed).
+  std::array<double, 4> node_box(std::size_t n) const {
+    const Curve_topology_vertex v = vertex_of(n);
+    const Node_key& k = keys_[n];
+    if (k.singular) return {v.u_lo, v.u_hi, v.v_lo, v.v_hi};
+    const auto c = CGAL::to_interval(k.c);
+    return k.vertical ? std::array<double, 4>{c.first, c.second, v.v_lo, v.v_hi}
+                      : std::array<double, 4>{v.u_lo, v.u_hi, c.first, c.second};
   }
 
   Curve_topology_vertex vertex_of(std::size_t n) const {
@@ -1082,16 +1091,34 @@ class Subdivision_topology {
       out.vertices.push_back(vertex_of(n));
       return vid[n] = out.vertices.size() - 1;
     };
-    // walk from node n along arc k; appends points; returns the node reached
-    auto walk = [&](std::size_t n, std::size_t k, std::vector<std::array<double, 2>>& poly) {
+    // walk from node n along arc k; appends points (the point of n is the last one already in poly) and the
+    // piece; returns the node reached (whose point comes next)
+    auto walk = [&](std::size_t n, std::size_t k, std::vector<std::array<double, 2>>& poly,
+                    std::vector<Curve_topology_piece>& pieces) {
       const Arc& a = arcs_[k];
       used[k] = 1;
-      if (a.n0 == n) {
-        poly.insert(poly.end(), a.inner.begin(), a.inner.end());
-        return a.n1;
+      const std::size_t to = a.n0 == n ? a.n1 : a.n0;
+      Curve_topology_piece piece{a.cell, a.graph_axis, poly.size() - 1, poly.size() + a.inner.size(), node_box(n),
+                                 node_box(to)};
+      if (a.graph_axis < 0) {  // Arc{crossing, singular point}
+        piece.singular_end = a.n0 == n ? 1 : 0;
+        const Node_key& c = keys_[a.n0];
+        piece.crossing_on_vertical_line = c.vertical;
+        // an isolating interval of the crossing on its line, widened half-way to its neighbouring roots (so that
+        // a rational root, whose own interval is a point, gets a proper one)
+        const auto& roots = lines_.at(std::make_pair(c.vertical, c.c)).roots;
+        const std::size_t r = std::size_t(c.index);
+        const Rational lo = r > 0 ? (roots[r - 1].root.upper() + roots[r].root.lower()) / 2 : roots[r].root.lower() - 1;
+        const Rational hi = r + 1 < roots.size() ? (roots[r].root.upper() + roots[r + 1].root.lower()) / 2
+                                                 : roots[r].root.upper() + 1;
+        piece.crossing = c.vertical ? Parameter_box{c.c, c.c, lo, hi} : Parameter_box{lo, hi, c.c, c.c};
       }
-      poly.insert(poly.end(), a.inner.rbegin(), a.inner.rend());
-      return a.n0;
+      if (a.n0 == n)
+        poly.insert(poly.end(), a.inner.begin(), a.inner.end());
+      else
+        poly.insert(poly.end(), a.inner.rbegin(), a.inner.rend());
+      pieces.push_back(piece);
+      return to;
     };
     auto point = [&](std::size_t n) {
       const Curve_topology_vertex v = vertex_of(n);
@@ -1103,7 +1130,7 @@ class Subdivision_topology {
       e.polyline.push_back(point(start));
       std::size_t n = start;
       for (;;) {
-        n = walk(n, k, e.polyline);
+        n = walk(n, k, e.polyline, e.pieces);
         if (is_stop(n) || (stop_at_target && n == target)) break;
         if (used[at[n][0]] && used[at[n][1]]) break;  // back at the start of a cycle
         e.polyline.push_back(point(n));
@@ -1161,7 +1188,6 @@ class Subdivision_topology {
   mpfr_prec_t prec_ = 256, root_prec_ = 256;
   std::shared_ptr<Interval_grid> root_grid_;  // Bernstein coefficients on the whole domain box
   double work_ = 0;                           // budget used (see run())
-  std::vector<long double> scaled_;
   std::map<std::pair<bool, Rational>, Line> lines_;
   std::map<Node_key, std::size_t> nodes_;
   std::vector<Node_key> keys_;

@@ -5,14 +5,17 @@
 // partner is a ratio of kernel entries).
 //
 // What is certified: D exactly; the components of D = 0 in the box, its singular points with their branch
-// counts and its boundary points. The lifting of sample points to the partner parameters, and therefore the
-// removal of phantom branches (partner outside its domain, or (k,l) = (0,0)), is computed in floating point
-// along the certified arcs and verified by the residual |Phi - Psi| at each point; it is reported as such.
+// counts and its boundary points. The lifting of sample points to the partner parameters is computed in
+// floating point (verified by the residual |Phi - Psi| at each point); the genuine / phantom status along the arcs
+// of a subdivision topology is then proved where possible (internal/certified_lifting.h: a partner enclosed in
+// the partner domain by a parametric Krawczyk test, or every partner excluded), and each traced point says whether
+// its status is proved (Locus_point::status_proved, Locus_arc::undecided_fraction).
 #ifndef BEZOUTIAN_SURFACE_INTERSECTION_H
 #define BEZOUTIAN_SURFACE_INTERSECTION_H
 
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_topology_by_subdivision.h>
+#include <bezoutian/internal/certified_lifting.h>
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
@@ -57,12 +60,19 @@ struct Locus_point {
   bool lifted = false;   ///< the kernel gave a partner
   /// partner inside its domain, distinct from the point itself, and verified: residual <= 1e-7 (1 + |point_3d|)
   bool genuine = false;
+  /// `genuine` is proved for the point of D = 0 that this traced point approximates: genuine by a partner enclosed
+  /// in the partner domain (parametric Krawczyk), phantom by an exclusion of every partner
+  /// (internal/certified_lifting.h). False: decided in floating point only.
+  bool status_proved = false;
 };
 
 /// One arc of D = 0 inside the box, traced.
 struct Locus_arc {
   std::size_t source = 0, target = 0;  ///< vertices of the certified topology
   std::vector<Locus_point> points;
+  /// Share of the arc (by length of its graph coordinate) whose genuine / phantom status is not proved: 0 when
+  /// every point of the exact arc, not only the traced ones, is proved genuine or phantom; 1 if nothing is.
+  double undecided_fraction = 1;
 };
 
 /// Two patches in contact along their boundaries (the teapot's patches are glued edge to edge): a piece of a
@@ -318,6 +328,41 @@ inline Surface_intersection_options with_partner_proofs(const Surface_intersecti
   return ow;
 }
 
+// Proves the genuine / phantom status along the arcs of a subdivision topology (internal/certified_lifting.h),
+// starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
+template <class Lift>
+void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                     Lift lift_point) {
+  if (L.topology_method != "subdivision") return;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    std::vector<std::array<double, 2>> partner;
+    std::vector<bool> known;
+    for (const Locus_point& q : arc.points) {
+      partner.push_back(q.partner);
+      // (a trivial partner (0, 0) of a self-intersection point is no guess for its true partner)
+      known.push_back(q.lifted && std::isfinite(q.partner[0]) && std::isfinite(q.partner[1]) &&
+                      !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9));
+    }
+    const Edge_partner_certificate c =
+        certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known);
+    arc.undecided_fraction = c.undecided_fraction;
+    for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
+      if (c.point_status[i] != Partner_status::undecided) {
+        Locus_point& q = arc.points[i];
+        const auto& y = c.partner_enclosure[i];
+        if (c.point_status[i] == Partner_status::genuine && q.lifted &&
+            !(y[0].lo <= q.partner[0] && q.partner[0] <= y[0].hi && y[1].lo <= q.partner[1] && q.partner[1] <= y[1].hi)) {
+          // the floating-point lifting followed another (e.g. the trivial) partner: restart it from the proved one
+          const std::array<double, 2> guess{y[0].mid(), y[1].mid()};
+          q = lift_point(q.projection[0], q.projection[1], &guess);
+        }
+        q.status_proved = true;
+        q.genuine = c.point_status[i] == Partner_status::genuine;
+      }
+  }
+}
+
 // A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
 // after polishing): a failed polish must not be reported as a double point.
 inline bool verified(const Locus_point& q) {
@@ -342,7 +387,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch))))
     return L;
   const Bezoutian_matrix& B = L.equation.matrix;
-  internal::lift_arcs(L, [&](double u, double v, const std::array<double, 2>* guess) {
+  auto lift_point = [&](double u, double v, const std::array<double, 2>* guess) {
     Locus_point q;
     q.projection = {u, v};
     std::array<double, 2> lk;  // (l, k)
@@ -388,7 +433,9 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
     q.genuine = distinct && internal::verified(q) && (o.partner_domain_unbounded ||
                              (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
-  });
+  };
+  internal::lift_arcs(L, lift_point);
+  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point);
   return L;
 }
 
@@ -471,7 +518,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi))))
     return L;
   const Bezoutian_matrix& B = L.equation.matrix;
-  internal::lift_arcs(L, [&](double u, double t, const std::array<double, 2>* guess) {
+  auto lift_point = [&](double u, double t, const std::array<double, 2>* guess) {
     Locus_point q;
     q.projection = {u, t};
     std::array<double, 2> vs;  // (v, s)
@@ -516,7 +563,9 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     q.genuine = internal::verified(q) && (o.partner_domain_unbounded ||
                 (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
-  });
+  };
+  internal::lift_arcs(L, lift_point);
+  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
   return L;
 }
 

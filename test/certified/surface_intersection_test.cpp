@@ -95,9 +95,12 @@ TEST_CASE("a paraboloid and a bent paraboloid cross along a closed curve", "[sur
   o.partner_domain = o.box;
   Surface_locus L = intersection_locus(phi, psi, o);
   REQUIRE(L.topology.components.size() >= 1);
-  std::size_t checked = 0;
+  std::size_t checked = 0, points = 0, proved_genuine = 0;
   for (const auto& arc : L.arcs)
     for (const auto& q : arc.points) {
+      ++points;
+      proved_genuine += q.status_proved && q.genuine;
+      CHECK(!(q.status_proved && !q.genuine));  // the whole curve is genuine (partners inside [-2, 2]^2)
       if (!q.lifted || q.residual > 1e-8) continue;
       const double u = q.projection[0], t = q.projection[1], v = q.partner[0], s = q.partner[1];
       CHECK(v == Approx(t).margin(1e-7));
@@ -106,6 +109,7 @@ TEST_CASE("a paraboloid and a bent paraboloid cross along a closed curve", "[sur
       ++checked;
     }
   CHECK(checked > 20);
+  CHECK(proved_genuine >= points * 9 / 10);  // the certified lifting covers (nearly) the whole curve
   bool closed = false;
   for (const auto& c : L.topology.components) closed |= c.closed;
   CHECK(closed);
@@ -250,6 +254,10 @@ void genuine_runs(const std::vector<Patch>& patches, int a, int b, std::vector<R
     CHECK_FALSE(c.shared_curve);  // handle and spout are not glued to the body: isolated contacts
     contacts.push_back(c.point);
   }
+  std::size_t genuine = 0, genuine_proved = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) genuine += q.genuine, genuine_proved += q.genuine && q.status_proved;
+  CHECK(genuine_proved >= genuine * 9 / 10);  // the genuine runs are (nearly all) proved genuine
   for (const auto& arc : L.arcs)
     for (std::size_t i = 0; i < arc.points.size();) {
       if (!arc.points[i].genuine) {
@@ -338,4 +346,42 @@ TEST_CASE("a patch without self-intersection: the empty locus is proved", "[surf
     CHECK(L.topology.components.empty());
     CHECK(L.topology.excluded_regions.empty() == !wide);
   }
+}
+
+// Certified lifting (internal/certified_lifting.h), checked against a double curve known in closed form whose
+// partner leaves the partner domain at a known parameter. Phi(u,v) = ((u - 3/10)^2, v^2, (u - 3/10)(v - 1/3)) as a
+// (3,2) patch: Phi(u, v) = Phi(u', v') with (u', v') != (u, v) iff v = v' = 1/3 and u' = 3/5 - u (v' = -v would need
+// v - 1/3 = v + 1/3). So the genuine self-intersection is the segment v = 1/3, 0 <= u <= 3/5 (the partner 3/5 - u
+// leaves [0,1] at u = 3/5), with the pinch point u = 3/10 (partner (0,0)); every other point of D = 0 is phantom.
+TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a closed-form partner",
+          "[surface][lifting]") {
+  const Patch phi = bezoutian_test::patch_from_power({"(u-3/10)^2", "v^2", "(u-3/10)*(v-1/3)"}, 3, 2);
+  const Surface_locus L = self_intersection_locus(phi);
+  REQUIRE(L.topology_computed);
+  REQUIRE(L.topology_method == "subdivision");
+  std::size_t on_line = 0, on_line_proved = 0, genuine_proved = 0, phantom_proved = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      const double u = q.projection[0], v = q.projection[1];
+      const bool line = std::fabs(v - 1.0 / 3) < 1e-9;
+      if (q.status_proved && q.genuine) {  // a proof of a genuine point must agree with the closed form
+        ++genuine_proved;
+        CHECK(line);
+        CHECK(u <= 0.6 + 1e-9);
+        CHECK(q.partner[0] == Approx(0.6 - 2 * u).margin(1e-6));  // (l, k): Q = (u + l, v), P = (u, v + k)
+        CHECK(q.partner[1] == Approx(0).margin(1e-6));
+      }
+      if (q.status_proved && !q.genuine) {
+        ++phantom_proved;
+        CHECK((!line || u >= 0.6 - 1e-9));
+      }
+      if (line && std::fabs(u - 0.6) > 0.02 && std::fabs(u - 0.3) > 0.04) {  // away from the transition and pinch
+        ++on_line;
+        on_line_proved += q.status_proved;
+      }
+    }
+  CHECK(on_line > 20);
+  CHECK(on_line_proved == on_line);  // the whole segment, both sides of the transition, is decided by proofs
+  CHECK(genuine_proved > 10);
+  CHECK(phantom_proved > 5);
 }

@@ -207,6 +207,13 @@ class Partner_equations {
     }
   }
 
+  /// The weights A_0(P), B_0(Q) over the real box z (outward-rounded double interval arithmetic).
+  std::array<Double_interval, 2> weights(const std::array<Double_interval, 4>& z) const {
+    std::array<Double_interval, 2> P, Q;
+    points(z, P, Q);
+    return {horner_interval(A_[0].if_, P), horner_interval(B_[0].if_, Q)};
+  }
+
   static Cx add(const Cx& x, const Cx& y) { return Cx{x.re + y.re, x.im + y.im}; }
   static Cx sub(const Cx& x, const Cx& y) { return Cx{x.re - y.re, x.im - y.im}; }
   static Cx mul(const Cx& x, const Cx& y) { return Cx{x.re * y.re - x.im * y.im, x.re * y.im + x.im * y.re}; }

@@ -1,0 +1,460 @@
+// Certified genuine / phantom status along the arcs of the projected locus D = 0 (buse-elkadi-galligo-2008 §4:
+// a point of D = 0 is a genuine point of the self-intersection / intersection curve iff it has a partner inside
+// the partner domain; otherwise it is phantom).
+//
+// Genuine, by a parametric Krawczyk test. On a cell where the subdivision proved D = 0 to be a graph over one
+// coordinate (say v = g(u): every line u = c meets D = 0 at most once inside the cell), take a span T of u and
+// a box W = V x Y of the other coordinate (V inside the cell) and of the partner y. The three partner equations
+// E(u, v; y) = 0 (double_partner_witness.h) are square in the unknowns w = (v, y) for each fixed u. If the
+// Krawczyk operator
+//   K = m - C E(T, m) + (I - C dE/dw(T, W)) (W - m),   m the centre of W, C ~ (dE/dw)^-1 at the centre,
+// satisfies K ⊆ W, then for EVERY u in T the map w -> w - C E(u, w) sends W into itself (mean value theorem on
+// the convex box), so E(u, .) has a zero (v, y) in K (Brouwer). With nonzero weights (and y != 0 for
+// self-intersection) (u, v) is a point of D = 0 in the cell, hence THE point of the arc over u, and y is one of
+// its partners. If the partner points P, Q lie in the partner domain for all of K, every arc point over T is
+// genuine.
+// Phantom, by exclusion: no_genuine_partner on the box T x V proves that no point there has any partner in the
+// partner domain (all partners, not only the one Krawczyk followed).
+// Spans that are neither (the partner crosses the domain boundary, or the tests do not contract) are halved a
+// few times; what remains is reported as undecided.
+#ifndef BEZOUTIAN_INTERNAL_CERTIFIED_LIFTING_H
+#define BEZOUTIAN_INTERNAL_CERTIFIED_LIFTING_H
+
+#include <bezoutian/Curve_topology.h>
+#include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/number_types.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+enum class Partner_status { genuine, phantom, undecided };
+
+/// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
+/// (0 or 1); T its span; W = (other coordinate, y1, y2). On success W is replaced by K (a tighter enclosure).
+inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, const Double_interval& T,
+                                        std::array<Double_interval, 3>& W, std::array<Double_interval, 3>* image = nullptr,
+                                        bool strict = false) {
+  using D = Double_interval;
+  const int q[3] = {1 - axis, 2, 3};
+  auto full = [&](const std::array<D, 3>& w, const D& t) {
+    std::array<D, 4> z;
+    z[axis] = t;
+    for (int c = 0; c < 3; ++c) z[q[c]] = w[c];
+    return z;
+  };
+  std::array<D, 3> m;
+  for (int c = 0; c < 3; ++c) m[c] = D{W[c].mid(), W[c].mid()};
+  // C: the inverse of the Jacobian at the centre (floating point; any C gives a valid test)
+  std::array<std::array<D, 4>, 3> Jc, J;
+  std::array<D, 3> E;
+  eq.evaluate(full(m, D{T.mid(), T.mid()}), E, &Jc);
+  double A[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) A[r][c] = Jc[r][q[c]].mid();
+  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+  if (!std::isfinite(det) || det == 0) return false;
+  double C[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      C[r][c] = (A[r1][c1] * A[r2][c2] - A[r1][c2] * A[r2][c1]) / det;  // adjugate / det
+    }
+  // mean-value form in the parameter too (much tighter than E(T, m) in naive interval arithmetic):
+  // E(t, m) in E(t_m, m) + dE/dx_axis(T, W) (T - t_m) for t in T
+  std::array<D, 3> EW;
+  eq.evaluate(full(W, T), EW, &J);  // (the values over W are not needed, only the Jacobian)
+  const D tm{T.mid(), T.mid()};
+  eq.evaluate(full(m, tm), E);
+  const std::array<D, 2> w = eq.weights(full(W, T));
+  if (w[0].contains_zero() || w[1].contains_zero()) return false;  // E = 0 would not put (x, y) on D = 0
+  std::array<D, 3> K;
+  for (int r = 0; r < 3; ++r) {
+    D k = m[r], slope{0, 0};
+    for (int c = 0; c < 3; ++c) {
+      const D cr{C[r][c], C[r][c]};
+      k = k - cr * E[c];
+      slope = slope + cr * J[c][axis];
+      D g{r == c ? 1.0 : 0.0, r == c ? 1.0 : 0.0};
+      for (int l = 0; l < 3; ++l) g = g - D{C[r][l], C[r][l]} * J[l][q[c]];
+      k = k + g * (W[c] - m[c]);
+    }
+    k = k - slope * (T - tm);
+    if (!(std::isfinite(k.lo) && std::isfinite(k.hi))) return false;
+    K[r] = k;
+  }
+  if (image) *image = K;
+  for (int r = 0; r < 3; ++r)
+    if (strict ? !(W[r].lo < K[r].lo && K[r].hi < W[r].hi) : !(W[r].lo <= K[r].lo && K[r].hi <= W[r].hi)) return false;
+  W = K;
+  return true;
+}
+
+/// Is the double interval [x.lo, x.hi] inside [a, b] (exactly), disjoint from it?
+inline bool interval_inside(const Double_interval& x, const Rational& a, const Rational& b) {
+  return Rational(x.lo) >= a && Rational(x.hi) <= b;
+}
+inline bool interval_disjoint(const Double_interval& x, const Rational& a, const Rational& b) {
+  return Rational(x.hi) < a || Rational(x.lo) > b;
+}
+
+/// A box W = V x Y predicted to hold the zeros (v, y) of E(t, .) for t in T (floating point: Newton at the centre
+/// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled).
+/// False if Newton does not converge.
+inline bool predict_partner_box(const Partner_equations& eq, int axis, const Double_interval& T,
+                                std::array<double, 3> w, std::array<Double_interval, 3>& W) {
+  using D = Double_interval;
+  const int q[3] = {1 - axis, 2, 3};
+  const double t = T.mid();
+  double A[3][3], b[3], step = 0;
+  for (int it = 0; it < 12; ++it) {
+    std::array<D, 4> z;
+    z[axis] = D{t, t};
+    for (int c = 0; c < 3; ++c) z[q[c]] = D{w[c], w[c]};
+    std::array<D, 3> E;
+    std::array<std::array<D, 4>, 3> J;
+    eq.evaluate(z, E, &J);
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
+      b[r] = it < 11 ? E[r].mid() : J[r][axis].mid();  // the last round solves for the tangent instead
+    }
+    const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                       A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    if (!std::isfinite(det) || det == 0) return false;
+    double x[3];
+    for (int r = 0; r < 3; ++r) {  // Cramer
+      double M[3][3];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) M[i][j] = j == r ? b[i] : A[i][j];
+      x[r] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+             det;
+    }
+    if (it < 11) {
+      step = std::fabs(x[0]) + std::fabs(x[1]) + std::fabs(x[2]);
+      for (int c = 0; c < 3; ++c) w[c] -= x[c];
+      if (!(step < 1)) return false;
+      continue;
+    }
+    if (!(step <= 1e-10 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2])))) return false;
+    const double h = 0.5 * (T.hi - T.lo);
+    for (int c = 0; c < 3; ++c) {
+      const double r = 2 * std::fabs(x[c]) * h + 4 * h * h + 1e-13 * (1 + std::fabs(w[c]));
+      W[c] = D{w[c] - r, w[c] + r};
+    }
+  }
+  return true;
+}
+
+/// Krawczyk's test with strict inclusion over the span T, with epsilon-inflation from the box W (updated to the
+/// box that passed, in which the zero curve gamma(t), t in T, is unique); K receives the operator's image, which
+/// encloses gamma(T).
+inline bool prove_zero_curve(const Partner_equations& eq, int axis, const Double_interval& T,
+                             std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K) {
+  using D = Double_interval;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    std::array<D, 3> image, trial = W;
+    if (parametric_partner_krawczyk(eq, axis, T, trial, &image, true)) {
+      K = trial;
+      return true;
+    }
+    if (!(std::isfinite(image[0].lo) && std::isfinite(image[0].hi))) return false;
+    // epsilon-inflation: retry on the hull of W and the operator's image, widened
+    for (int c = 0; c < 3; ++c) {
+      const double lo = std::min(W[c].lo, image[c].lo), hi = std::max(W[c].hi, image[c].hi), r = 0.1 * (hi - lo) + 1e-15;
+      W[c] = D{lo - r, hi + r};
+    }
+  }
+  return false;
+}
+
+/// The status given by a partner enclosure K_y of the arc points over T whose other coordinate lies in K_v
+/// (proved): genuine if P, Q are in the partner domain over all of K; phantom if they are outside and no point of
+/// T x K_v has any partner in the domain; otherwise undecided.
+inline Partner_status status_from_partner(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                                          int axis, const Double_interval& T, const std::array<Double_interval, 3>& K,
+                                          const std::vector<std::array<Double_interval, 2>>* start) {
+  using D = Double_interval;
+  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
+    return Partner_status::undecided;  // the trivial partner y = 0 is not a partner
+  const D& X1 = axis == 0 ? T : K[0];
+  const D& X2 = axis == 0 ? K[0] : T;
+  std::array<D, 2> P, Q;
+  eq.points(std::array<D, 4>{X1, X2, K[1], K[2]}, P, Q);
+  if (unbounded ||
+      (interval_inside(P[0], domain.u0, domain.u1) && interval_inside(P[1], domain.v0, domain.v1) &&
+       interval_inside(Q[0], domain.u0, domain.u1) && interval_inside(Q[1], domain.v0, domain.v1)))
+    return Partner_status::genuine;
+  const bool outside = interval_disjoint(P[0], domain.u0, domain.u1) || interval_disjoint(P[1], domain.v0, domain.v1) ||
+                       interval_disjoint(Q[0], domain.u0, domain.u1) || interval_disjoint(Q[1], domain.v0, domain.v1);
+  if (!outside) return Partner_status::undecided;  // the partner crosses the domain boundary over T
+  const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
+  return no_genuine_partner(eq, box, domain, 1024, start) ? Partner_status::phantom : Partner_status::undecided;
+}
+
+/// Status of every arc point over the span T of a graph piece (see the header comment), starting from a box
+/// W0 = V x Y predicted to hold the arc and its partner there; `cell` is the piece's cell and `axis` its graph
+/// coordinate. Proof of the genuine case, in three steps:
+///  1. Krawczyk's test with strict inclusion K ⊂ int W for the whole span: for every t in T, E(t, .) has exactly
+///     one zero gamma(t) in W, and dE/dw is regular on W, so gamma is continuous (implicit functions);
+///  2. an anchor: Krawczyk's test at the single value t* = mid T encloses gamma(t*) strictly inside the cell,
+///     where the line through t* meets D = 0 only at the arc point: gamma(t*) is the arc point with a partner;
+///  3. continuity: the arc points over T (a connected set, inside the cell, touching the cell's edges only at
+///     its end points) and gamma agree at t*, and wherever they agree gamma is inside the cell nearby (except
+///     at the arc's end), so they agree on all of T: every arc point over T has the partner gamma_y(t) in K_y.
+/// V may therefore leave the cell (arcs entering the cell through an edge parallel to the graph axis).
+/// Genuine if P and Q lie in the partner domain over all of K. Phantom if the partner found is outside and no
+/// point of T x K_v (which holds the arc points over T) has any partner in the domain (no_genuine_partner,
+/// started from `start()`: partner pieces covering every candidate partner of the cell's points, or null).
+inline Partner_status classify_partner_span(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                                            int axis, const Double_interval& T, const std::array<Double_interval, 3>& W0,
+                                            const Parameter_box& cell,
+                                            const std::function<const std::vector<std::array<Double_interval, 2>>*()>& start,
+                                            std::array<Double_interval, 2>* partner = nullptr) {
+  using D = Double_interval;
+  // Fallback phantom proof without a partner: the arc points over T lie in T x (the cell's range), so excluding
+  // every partner there suffices (a wider box than T x K_v, but no Krawczyk proof is needed).
+  auto cell_phantom = [&]() {
+    if (unbounded) return Partner_status::undecided;
+    const Parameter_box box = axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), cell.v0, cell.v1}
+                                        : Parameter_box{cell.u0, cell.u1, Rational(T.lo), Rational(T.hi)};
+    return no_genuine_partner(eq, box, domain, 1024, start()) ? Partner_status::phantom : Partner_status::undecided;
+  };
+  std::array<D, 3> W = W0, K;
+  const bool proved = prove_zero_curve(eq, axis, T, W, K);
+  if (!proved) return cell_phantom();
+  {  // the anchor
+    std::array<D, 3> at = W;
+    const D t{T.mid(), T.mid()};
+    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return cell_phantom();
+    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
+    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return cell_phantom();
+  }
+  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
+    return cell_phantom();  // the trivial partner y = 0 is not a partner
+  if (partner) *partner = {K[1], K[2]};
+  return status_from_partner(eq, domain, unbounded, axis, T, K, start());
+}
+
+/// Result of certify_edge_partners: status per polyline point and the undecided fraction of the edge.
+struct Edge_partner_certificate {
+  std::vector<Partner_status> point_status;  ///< per polyline point (undecided if not proved)
+  /// per polyline point proved genuine: an enclosure of a partner of the arc point (NaN bounds otherwise)
+  std::vector<std::array<Double_interval, 2>> partner_enclosure;
+  double undecided_fraction = 1;            ///< undecided share of the edge's spans (by graph-coordinate length)
+};
+
+/// A half-branch H of D = 0 inside the box of a singular point p, from a crossing c of the box's edge to p
+/// (graph_axis -1: not a proved graph). Chained proof along the traced points from c: with t the coordinate
+/// along the line of c's edge's normal (u if c lies on a line u = const),
+///  - each span [t_j, t_j+1] gets a strict Krawczyk proof (a unique, continuous zero curve gamma_j in its box W_j);
+///  - the first is anchored at c: Krawczyk at t = t_c encloses gamma_0(t_c) in c's isolating interval on its
+///    line, so gamma_0(t_c) is c;
+///  - consecutive curves agree at t_j: Krawczyk at t_j on W_j-1 ∩ W_j proves a zero there, equal to both;
+/// so the projection of the chained curve is a continuous path of D = 0 that starts at c, enters the box, and
+/// (H being the only part of D = 0 in the box near c, and a 1-manifold up to p) runs along H; as t is monotone
+/// it covers the sub-arc of H from c to the last proved t. The span that reaches p is not attempted (there both
+/// branches meet). Sets the statuses of the points covered; returns the undecided fraction of the piece.
+inline double certify_half_branch(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                                  const Curve_topology_edge& e, const Curve_topology_piece& pc,
+                                  const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
+                                  Edge_partner_certificate& out);
+
+/// Certifies the genuine / phantom status along an edge of a subdivision topology: for each graph piece, the
+/// spans between consecutive polyline points (halved up to `max_halvings` times while undecided) are classified
+/// by classify_partner_span; `partner[i]` is the floating-point partner of polyline point i (the first guess).
+/// Half-branches inside singular boxes (graph_axis -1) are chained from their crossing (certify_half_branch).
+inline Edge_partner_certificate certify_edge_partners(const Partner_equations& eq, const Parameter_box& domain,
+                                                      bool unbounded, const Curve_topology_edge& e,
+                                                      const std::vector<std::array<double, 2>>& partner,
+                                                      const std::vector<bool>& partner_known, int max_halvings = 6) {
+  using D = Double_interval;
+  Edge_partner_certificate out;
+  const std::size_t n = e.polyline.size();
+  out.point_status.assign(n, Partner_status::undecided);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::array<D, 2> none{D{nan, nan}, D{nan, nan}};
+  out.partner_enclosure.assign(n, none);
+  double total = 0, undecided = 0;
+  auto merge = [&](std::size_t i, Partner_status s, const std::array<D, 2>& y) {
+    if (s == Partner_status::undecided) return;
+    out.point_status[i] = s;
+    if (s == Partner_status::genuine) out.partner_enclosure[i] = y;
+  };
+  for (const Curve_topology_piece& pc : e.pieces) {
+    if (pc.last >= n || pc.first >= pc.last) continue;
+    if (pc.graph_axis < 0) {  // a half-branch inside a singular point's box
+      const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
+                         std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
+      total += len;
+      undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known, out);
+      continue;
+    }
+    const int axis = pc.graph_axis;
+    const int other = 1 - axis;
+    // the graph coordinate and the other one at polyline point i, as intervals (end points: node enclosures)
+    auto coord = [&](std::size_t i, int c) {
+      if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
+      if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+      return D{e.polyline[i][c], e.polyline[i][c]};
+    };
+    // The partner pieces that survive the exclusion on the whole cell cover every candidate partner of its points:
+    // the phantom proofs of the spans start from them (computed once, on first demand). If the whole cell is
+    // excluded, start() returns an empty cover and every phantom proof is immediate.
+    bool computed = false, cell_failed = false;
+    std::vector<std::array<D, 2>> survivors;
+    auto start = [&]() -> const std::vector<std::array<D, 2>>* {
+      if (!computed) {
+        computed = true;
+        cell_failed = !no_genuine_partner(eq, pc.cell, domain, 1024, nullptr, &survivors);
+      }
+      return cell_failed && survivors.empty() ? nullptr : &survivors;
+    };
+    for (std::size_t i = pc.first; i < pc.last; ++i) {
+      const D a = coord(i, axis), b = coord(i + 1, axis);
+      const D T{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+      const double len = T.hi - T.lo;
+      total += len;
+      const D oa = coord(i, other), ob = coord(i + 1, other);
+      const double slope_room = 0.5 * (std::max(oa.hi, ob.hi) - std::min(oa.lo, ob.lo)) + 0.25 * len + 1e-12;
+      const D V{std::min(oa.lo, ob.lo) - slope_room, std::max(oa.hi, ob.hi) + slope_room};
+      std::array<D, 3> W{V, D{}, D{}};
+      for (int c = 0; c < 2; ++c) {  // (a partner not known: the other end's; none: 0, for the exclusion fallback)
+        const bool k0 = partner_known[i], k1 = partner_known[i + 1];
+        const double y0 = k0 ? partner[i][c] : (k1 ? partner[i + 1][c] : 0);
+        const double y1 = k1 ? partner[i + 1][c] : y0;
+        const double r = 0.5 * std::fabs(y1 - y0) + 0.25 * len + 1e-9 * (1 + std::fabs(y0));
+        W[1 + c] = D{std::min(y0, y1) - r, std::max(y0, y1) + r};
+      }
+      // halve undecided spans: a partner leaving the domain inside the span, or a span too long to contract
+      struct Span {
+        D T;
+        int depth;
+      };
+      std::vector<Span> stack{{T, 0}};
+      Partner_status left = Partner_status::undecided, right = Partner_status::undecided;
+      std::array<D, 2> left_y = none, right_y = none;
+      while (!stack.empty()) {
+        const Span s = stack.back();
+        stack.pop_back();
+        std::array<D, 3> Ws = W, P;  // the box predicted from the tangent at the middle of the span, if any
+        if (predict_partner_box(eq, axis, s.T, {W[0].mid(), W[1].mid(), W[2].mid()}, P)) Ws = P;
+        std::array<D, 2> y = none;
+        const Partner_status st = classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y);
+        if (st == Partner_status::undecided && s.depth < max_halvings) {
+          const double mid = s.T.mid();
+          stack.push_back({D{mid, s.T.hi}, s.depth + 1});
+          stack.push_back({D{s.T.lo, mid}, s.depth + 1});
+          continue;
+        }
+        if (st == Partner_status::undecided) undecided += s.T.hi - s.T.lo;
+        if (s.T.lo <= T.lo) left = st, left_y = y;
+        if (s.T.hi >= T.hi) right = st, right_y = y;
+      }
+      // the polyline may run either way along the graph coordinate
+      const bool increasing = a.mid() <= b.mid();
+      merge(i, increasing ? left : right, increasing ? left_y : right_y);
+      merge(i + 1, increasing ? right : left, increasing ? right_y : left_y);
+    }
+  }
+  out.undecided_fraction = total > 0 ? undecided / total : 1;
+  return out;
+}
+
+inline double certify_half_branch(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                                  const Curve_topology_edge& e, const Curve_topology_piece& pc,
+                                  const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
+                                  Edge_partner_certificate& out) {
+  using D = Double_interval;
+  if (pc.singular_end < 0 || pc.last >= e.polyline.size()) return 1;
+  const int axis = pc.crossing_on_vertical_line ? 0 : 1;
+  std::vector<std::size_t> idx;  // from the crossing to the singular point
+  for (std::size_t i = pc.first; i <= pc.last; ++i) idx.push_back(i);
+  if (pc.singular_end == 0) std::reverse(idx.begin(), idx.end());
+  const std::size_t m = idx.size();
+  if (m < 3) return 1;
+  const D tc = axis == 0 ? D::hull(pc.crossing.u0, pc.crossing.u1) : D::hull(pc.crossing.v0, pc.crossing.v1);
+  auto t_at = [&](std::size_t j) { return j == 0 ? tc : D{e.polyline[idx[j]][axis], e.polyline[idx[j]][axis]}; };
+  const double full = std::fabs(e.polyline[idx[m - 1]][axis] - tc.mid());
+  if (!(full > 0)) return 1;
+  const double dir = e.polyline[idx[1]][axis] - tc.mid();
+  std::array<D, 3> W_prev;
+  double covered = 0;
+  // Spans in order from c; a span that fails is halved (up to 4 times) and the halves are chained in turn. The
+  // guess for a span is the previous proved box (continuation), or the traced point's floating-point partner.
+  struct Span {
+    D T;
+    std::size_t j;  // the span lies between traced points j and j + 1
+    int depth;
+  };
+  std::vector<Span> todo;  // processed from the back
+  for (std::size_t j = m - 2; j-- > 0;) todo.push_back({D{}, j, 0});
+  bool first = true;
+  double t_done = tc.mid();
+  while (!todo.empty()) {
+    Span sp = todo.back();
+    todo.pop_back();
+    const std::size_t j = sp.j;
+    const D a0 = t_at(j), b0 = t_at(j + 1);
+    if ((b0.mid() - a0.mid()) * dir <= 0) break;  // not monotone along t
+    D T = sp.depth == 0 ? D{std::min(a0.lo, b0.lo), std::max(a0.hi, b0.hi)} : sp.T;
+    const bool at_c = first;
+    const D a = at_c ? tc : D{t_done, t_done};  // the shared end with the previous (proved) span
+    if (!at_c) T = dir > 0 ? D{t_done, T.hi} : D{T.lo, t_done};
+    std::array<double, 3> guess;
+    const std::size_t g = known[idx[j + 1]] ? idx[j + 1] : idx[j];
+    if (!first)
+      guess = {W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()};
+    else if (known[g])
+      guess = {e.polyline[idx[j + 1]][1 - axis], partner[g][0], partner[g][1]};
+    else
+      break;
+    std::array<D, 3> W, K;
+    bool ok = predict_partner_box(eq, axis, T, guess, W) && prove_zero_curve(eq, axis, T, W, K);
+    if (ok && at_c) {  // anchor at c: the zero at t_c lies in c's isolating interval on its line
+      std::array<D, 3> at = W;
+      const Rational &lo = axis == 0 ? pc.crossing.v0 : pc.crossing.u0, &hi = axis == 0 ? pc.crossing.v1 : pc.crossing.u1;
+      ok = parametric_partner_krawczyk(eq, axis, tc, at) && Rational(at[0].lo) >= lo && Rational(at[0].hi) <= hi;
+    } else if (ok) {  // the zero curves of consecutive spans agree at their common end
+      std::array<D, 3> both;
+      for (int c = 0; c < 3 && ok; ++c) {
+        both[c] = D{std::max(W_prev[c].lo, W[c].lo), std::min(W_prev[c].hi, W[c].hi)};
+        ok = both[c].lo <= both[c].hi;
+      }
+      ok = ok && parametric_partner_krawczyk(eq, axis, a, both);
+    }
+    const Partner_status st = ok ? status_from_partner(eq, domain, unbounded, axis, T, K, nullptr)
+                                 : Partner_status::undecided;
+    if (st == Partner_status::undecided) {
+      if (sp.depth >= 4) break;
+      const double mid = T.mid();  // retry on the first half, then the second
+      todo.push_back({dir > 0 ? D{mid, T.hi} : D{T.lo, mid}, j, sp.depth + 1});
+      todo.push_back({dir > 0 ? D{T.lo, mid} : D{mid, T.hi}, j, sp.depth + 1});
+      continue;
+    }
+    first = false;
+    W_prev = W;
+    t_done = dir > 0 ? T.hi : T.lo;
+    const bool span_end = dir > 0 ? T.hi >= b0.hi : T.lo <= b0.lo;  // reached traced point j + 1
+    for (std::size_t k : {j, j + 1}) {  // (gamma_0(t_c) is c itself)
+      if (k == j + 1 && !span_end) continue;
+      if (k == j && !(at_c || sp.depth == 0 || (dir > 0 ? T.lo <= a0.mid() : T.hi >= a0.mid()))) continue;
+      if (out.point_status[idx[k]] == Partner_status::undecided) out.point_status[idx[k]] = st;
+      if (st == Partner_status::genuine) out.partner_enclosure[idx[k]] = {K[1], K[2]};
+    }
+    covered = std::fabs(t_done - tc.mid());
+  }
+  return std::max(0.0, 1 - covered / full);
+}
+
+}  // namespace internal
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_INTERNAL_CERTIFIED_LIFTING_H
