@@ -2,10 +2,11 @@
 // over Q, Groebner_bivariate.h) against the default method and Singular on the same generated systems: du-1989
 // protocol cells (3D rational and polynomial curves of degrees 3-2 .. 3-6) and planar pairs 2-2 .. 6-6, N problems
 // per cell with k = 2 known intersections, median ms per problem.
-//   groebner_benchmark [N=3] [singular=1] [timeout_s=60]
+//   groebner_benchmark [N=3] [singular=1] [timeout_s=30]
 // Singular (when installed) gets the system F_k = X1_k(s) W2(t) - X2_k(t) W1(s), k = 1..D, in the ring
-// (t, s) with lp, timed inside Singular (rtimer): modStd (modstd.lib, multi-modular, probabilistic final test) and
-// std in lp; one Singular process per system and algorithm, killed after timeout_s (reported as ">timeout").
+// (t, s) with lp, timed inside Singular (rtimer, wall clock): modStd (modstd.lib, multi-modular; exactness 1 =
+// verified result, its final reductions run in forked processes: a few hundred ms of overhead), std in dp followed by
+// fglm to lp, and std in lp; one Singular process per system and algorithm, killed after timeout_s ("  >tmo").
 // Our groebner strategy computes the basis of the pair (F1, F2) in both directions (R(s) and T(t)), certified, and
 // in space takes the gcd with the other pairs' resultants (Curve_intersection.h strategy_R).
 #include <bezoutian/Curve_intersection.h>
@@ -60,17 +61,24 @@ std::string singular_ideal(const Curve_problem<D>& p) {
   return o.str();
 }
 
-// ms inside Singular for one system, -1 if Singular is missing, -2 on timeout or failure.
-double singular_ms(const std::string& ideal, bool modstd, int timeout_s) {
+// ms inside Singular for one system (mode 0: modStd, 1: std in dp + fglm, 2: std in lp), -1 if Singular is
+// missing, -2 on timeout or failure.
+double singular_ms(const std::string& ideal, int mode, int timeout_s) {
   static const bool installed = std::system("command -v Singular > /dev/null 2>&1") == 0;
   if (!installed) return -1;
   const std::string script = "/tmp/bezoutian_groebner_bench.sing", out = "/tmp/bezoutian_groebner_bench.out";
   {
     std::ofstream f(script);
     f << "system(\"--ticks-per-sec\",1000);\n";
-    if (modstd) f << "LIB \"modstd.lib\";\n";
-    f << "ring r=0,(t,s),lp;\noption(redSB);\nideal I = " << ideal << ";\nint t0 = rtimer;\n"
-      << (modstd ? "ideal G = modStd(I);\n" : "ideal G = std(I);\n") << "\"T \" + string(rtimer - t0);\nquit;\n";
+    if (mode == 0) f << "LIB \"modstd.lib\";\n";
+    if (mode == 1) {
+      f << "ring r2=0,(t,s),dp;\noption(redSB);\nideal I = " << ideal << ";\nint t0 = rtimer;\nideal J = std(I);\n"
+        << "ring r=0,(t,s),lp;\nideal G = fglm(r2, J);\n";
+    } else {
+      f << "ring r=0,(t,s),lp;\noption(redSB);\nideal I = " << ideal << ";\nint t0 = rtimer;\n"
+        << (mode == 0 ? "ideal G = modStd(I);\n" : "ideal G = std(I);\n");
+    }
+    f << "\"T \" + string(rtimer - t0);\nquit;\n";
   }
   if (std::system(("timeout " + std::to_string(timeout_s) + " Singular -q " + script + " > " + out + " 2>&1").c_str()) != 0)
     return -2;
@@ -91,8 +99,8 @@ std::string cell(double ms) {
 
 template <int D>
 void run_cell(int n1, int n2, bool rational, int N, bool singular, int timeout_s) {
-  std::vector<double> def, gb, ms, lp;
-  bool ms_timeout = false, lp_timeout = false;
+  std::vector<double> def, gb, sg[3];
+  bool timeout[3] = {false, false, false};
   for (int i = 0; i < N; ++i) {
     Curve_problem_parameters par;
     par.degree_1 = n1;
@@ -108,19 +116,22 @@ void run_cell(int n1, int n2, bool rational, int N, bool singular, int timeout_s
     if (a != b) std::printf("ERROR: the strategies disagree\n");
     if (singular) {
       const std::string I = singular_ideal(p);
-      const double x = singular_ms(I, true, timeout_s), y = singular_ms(I, false, timeout_s);
-      if (x >= 0) ms.push_back(x);
-      if (y >= 0) lp.push_back(y);
-      ms_timeout = ms_timeout || x == -2;
-      lp_timeout = lp_timeout || y == -2;
+      for (int m = 0; m < 3; ++m) {
+        if (timeout[m]) continue;  // once a problem of the cell timed out, the cell is reported as a timeout
+        const double x = singular_ms(I, m, timeout_s);
+        if (x >= 0) sg[m].push_back(x);
+        timeout[m] = x == -2;
+      }
     }
   }
   const double mdef = median(def), mgb = median(gb);
-  const double mms = ms_timeout ? -2 : (singular ? median(ms) : -1), mlp = lp_timeout ? -2 : (singular ? median(lp) : -1);
-  std::printf("  %dD %s %d-%d  default %s  groebner %s  (x%.0f)  | Singular modStd %s  std lp %s", D,
+  double msg[3];
+  for (int m = 0; m < 3; ++m) msg[m] = timeout[m] ? -2 : (singular ? median(sg[m]) : -1);
+  std::printf("  %dD %s %d-%d  default %s  groebner %s  (x%.0f)  | Singular modStd %s  dp+fglm %s  lp %s", D,
               rational ? "rational  " : "polynomial", n1, n2, cell(mdef).c_str(), cell(mgb).c_str(), mgb / mdef,
-              cell(mms).c_str(), cell(mlp).c_str());
-  if (mms > 0) std::printf("  groebner/modStd %.2f", mgb / mms);
+              cell(msg[0]).c_str(), cell(msg[1]).c_str(), cell(msg[2]).c_str());
+  if (msg[0] > 0) std::printf("  groebner/modStd %.2f", mgb / msg[0]);
+  if (msg[1] > 0) std::printf("  groebner/fglm %.2f", mgb / msg[1]);
   std::printf("\n");
   std::fflush(stdout);
 }
@@ -130,7 +141,7 @@ void run_cell(int n1, int n2, bool rational, int N, bool singular, int timeout_s
 int main(int argc, char** argv) {
   const int N = argc > 1 ? std::atoi(argv[1]) : 3;
   const bool singular = argc > 2 ? std::atoi(argv[2]) != 0 : true;
-  const int timeout_s = argc > 3 ? std::atoi(argv[3]) : 60;
+  const int timeout_s = argc > 3 ? std::atoi(argv[3]) : 30;
   std::printf("Groebner strategy, %d problems per cell (k = 2), median ms per problem; Singular timeout %d s\n", N,
               timeout_s);
   for (int rat = 1; rat >= 0; --rat)
