@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   const int max_degree = argc > 1 ? std::atoi(argv[1]) : 200;
   const int count = argc > 2 ? std::atoi(argv[2]) : 3;
   std::mt19937 g(20261122);
-  std::cout << "case  kind  size  total_degree  implicit[s]  topology+lifting[s]  components  singular\n";
+  std::cout << "case  kind  size  total_degree  implicit[s]  topology+lifting[s]  components  singular  "
+               "[traced points whose genuine/phantom status is proved, genuine points]\n";
   for (auto mn : std::vector<std::pair<int, int>>{{2, 2}, {3, 2}, {3, 3}})
     for (bool rational : {false, true})
       for (bool self : {true, false})
@@ -41,10 +42,13 @@ int main(int argc, char** argv) {
           o.max_total_degree_for_topology = 16;  // CGAL's analysis only where it is practical
           Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
           const double tt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-          std::size_t closed = 0;
+          std::size_t closed = 0, points = 0, proved = 0, genuine = 0;
           for (const auto& c : L.topology.components) closed += c.closed;
+          for (const auto& arc : L.arcs)
+            for (const auto& q : arc.points) ++points, proved += q.status_proved, genuine += q.genuine;
           std::cout << " " << tt << " " << L.topology.components.size() << " (" << closed << " closed) "
-                    << L.topology.number_of_singular_points() << " "
+                    << L.topology.number_of_singular_points() << " [status proved " << proved << "/" << points
+                    << ", genuine " << genuine << "] "
                     << (L.topology_computed ? L.topology_method : std::string("NOT CERTIFIED: ") + L.note) << std::endl;
         }
 }

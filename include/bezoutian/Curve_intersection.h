@@ -56,7 +56,8 @@ enum class Curve_intersection_method {
   resolvent,       ///< space curves with a curve of degree <= 3: R = gcd of Goldman's quadrics (du-1989 eq. 4.2/4.3)
                    ///< of that curve evaluated on the other one; otherwise as projection
   groebner         ///< R = generator of <F_1, .., F_D> ∩ Q[s] from a reduced lexicographic Groebner basis (t > s),
-                   ///< T likewise with s > t (Groebner_bivariate.h); slow beyond small degrees (step budget: Error)
+                   ///< T likewise with s > t (Groebner_bivariate.h: multi-modular basis certified over Q; exact
+                   ///< Buchberger within a budget when no certificate applies, then Error)
 };
 
 /// Kind of an isolated intersection.

@@ -48,6 +48,9 @@ struct Surface_intersection_options {
   int max_total_degree_for_topology = 16;
   /// Limits of the subdivision.
   Subdivision_topology_options subdivision;
+  /// Prove the genuine / phantom status along the arcs (internal/certified_lifting.h; subdivision topologies
+  /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
+  bool certify_lifting = true;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
@@ -333,19 +336,21 @@ inline Surface_intersection_options with_partner_proofs(const Surface_intersecti
 template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
                      Lift lift_point) {
-  if (L.topology_method != "subdivision") return;
+  if (L.topology_method != "subdivision" || !o.certify_lifting) return;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     std::vector<std::array<double, 2>> partner;
-    std::vector<bool> known;
+    std::vector<bool> known, float_genuine;
     for (const Locus_point& q : arc.points) {
+      float_genuine.push_back(q.genuine);
       partner.push_back(q.partner);
       // (a trivial partner (0, 0) of a self-intersection point is no guess for its true partner)
       known.push_back(q.lifted && std::isfinite(q.partner[0]) && std::isfinite(q.partner[1]) &&
                       !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9));
     }
     const Edge_partner_certificate c =
-        certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known);
+        certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
+                              float_genuine);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided) {

@@ -217,15 +217,17 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
                                             int axis, const Double_interval& T, const std::array<Double_interval, 3>& W0,
                                             const Parameter_box& cell,
                                             const std::function<const std::vector<std::array<Double_interval, 2>>*()>& start,
-                                            std::array<Double_interval, 2>* partner = nullptr) {
+                                            std::array<Double_interval, 2>* partner = nullptr,
+                                            bool try_cell_exclusion = true) {
   using D = Double_interval;
   // Fallback phantom proof without a partner: the arc points over T lie in T x (the cell's range), so excluding
-  // every partner there suffices (a wider box than T x K_v, but no Krawczyk proof is needed).
+  // every partner there suffices (a wider box than T x K_v, but no Krawczyk proof is needed). Costly when it
+  // fails: the caller asks for it only where the floating-point lifting saw phantom points.
   auto cell_phantom = [&]() {
-    if (unbounded) return Partner_status::undecided;
+    if (unbounded || !try_cell_exclusion) return Partner_status::undecided;
     const Parameter_box box = axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), cell.v0, cell.v1}
                                         : Parameter_box{cell.u0, cell.u1, Rational(T.lo), Rational(T.hi)};
-    return no_genuine_partner(eq, box, domain, 1024, start()) ? Partner_status::phantom : Partner_status::undecided;
+    return no_genuine_partner(eq, box, domain, 256, start()) ? Partner_status::phantom : Partner_status::undecided;
   };
   std::array<D, 3> W = W0, K;
   const bool proved = prove_zero_curve(eq, axis, T, W, K);
@@ -269,12 +271,14 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
 
 /// Certifies the genuine / phantom status along an edge of a subdivision topology: for each graph piece, the
 /// spans between consecutive polyline points (halved up to `max_halvings` times while undecided) are classified
-/// by classify_partner_span; `partner[i]` is the floating-point partner of polyline point i (the first guess).
+/// by classify_partner_span; `partner[i]` is the floating-point partner of polyline point i (the first guess),
+/// `float_genuine[i]` its floating-point status (the costly exclusion fallback is tried only near phantom points).
 /// Half-branches inside singular boxes (graph_axis -1) are chained from their crossing (certify_half_branch).
 inline Edge_partner_certificate certify_edge_partners(const Partner_equations& eq, const Parameter_box& domain,
                                                       bool unbounded, const Curve_topology_edge& e,
                                                       const std::vector<std::array<double, 2>>& partner,
-                                                      const std::vector<bool>& partner_known, int max_halvings = 6) {
+                                                      const std::vector<bool>& partner_known,
+                                                      const std::vector<bool>& float_genuine, int max_halvings = 6) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -347,7 +351,9 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         std::array<D, 3> Ws = W, P;  // the box predicted from the tangent at the middle of the span, if any
         if (predict_partner_box(eq, axis, s.T, {W[0].mid(), W[1].mid(), W[2].mid()}, P)) Ws = P;
         std::array<D, 2> y = none;
-        const Partner_status st = classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y);
+        const bool phantom_seen = !float_genuine[i] || !float_genuine[i + 1];
+        const Partner_status st =
+            classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y, phantom_seen && s.depth <= 2);
         if (st == Partner_status::undecided && s.depth < max_halvings) {
           const double mid = s.T.mid();
           stack.push_back({D{mid, s.T.hi}, s.depth + 1});
