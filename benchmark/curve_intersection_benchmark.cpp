@@ -8,6 +8,8 @@
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_problem_generator.h>
 
+#include "singular_systems.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -36,25 +38,6 @@ double time_ms(const Curve_problem<D>& p, Curve_intersection_method m) {
   return ms;
 }
 
-// The system F_k(s,t) = X1_k(s) W2(t) - X2_k(t) W1(s) in Singular's syntax.
-template <int D>
-std::string singular_ideal(const Curve_problem<D>& p) {
-  const auto H1 = internal::integer_power_form(p.curve_1), H2 = internal::integer_power_form(p.curve_2);
-  std::ostringstream o;
-  for (int k = 1; k <= D; ++k) {
-    const auto F = internal::cross_term(H1[k], H2[0], H2[k], H1[0]);
-    std::ostringstream f;
-    bool first = true;
-    for (int j = 0; j <= F.degree(); ++j)
-      for (int i = 0; !CGAL::is_zero(F[j]) && i <= F[j].degree(); ++i)
-        if (!CGAL::is_zero(F[j][i])) {
-          f << (first ? "" : "+") << "(" << F[j][i] << ")*s^" << i << "*t^" << j;
-          first = false;
-        }
-    o << (k > 1 ? ", " : "") << (first ? "0" : f.str());
-  }
-  return o.str();
-}
 
 // Median ms of Singular's std() (lexicographic, t > s: the basis contains the eliminant in s) over the systems,
 // timed inside one Singular process (rtimer, 1000 ticks per second); -1 if Singular is not installed.

@@ -11,6 +11,8 @@
 // in space takes the gcd with the other pairs' resultants (Curve_intersection.h strategy_R).
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_problem_generator.h>
+
+#include "singular_systems.h"
 #include <bezoutian/Groebner_bivariate.h>
 
 #include <algorithm>
@@ -42,24 +44,6 @@ double time_ms(const Curve_problem<D>& p, Curve_intersection_method m, std::size
   return ms;
 }
 
-template <int D>
-std::string singular_ideal(const Curve_problem<D>& p) {
-  const auto H1 = internal::integer_power_form(p.curve_1), H2 = internal::integer_power_form(p.curve_2);
-  std::ostringstream o;
-  for (int k = 1; k <= D; ++k) {
-    const auto F = internal::cross_term(H1[k], H2[0], H2[k], H1[0]);
-    std::ostringstream f;
-    bool first = true;
-    for (int j = 0; j <= F.degree(); ++j)
-      for (int i = 0; !CGAL::is_zero(F[j]) && i <= F[j].degree(); ++i)
-        if (!CGAL::is_zero(F[j][i])) {
-          f << (first ? "" : "+") << "(" << F[j][i] << ")*s^" << i << "*t^" << j;
-          first = false;
-        }
-    o << (k > 1 ? ", " : "") << (first ? "0" : f.str());
-  }
-  return o.str();
-}
 
 // ms inside Singular for one system (mode 0: modStd, 1: std in dp + fglm, 2: std in lp), -1 if Singular is
 // missing, -2 on timeout or failure.

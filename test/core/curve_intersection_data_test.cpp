@@ -2,6 +2,8 @@
 // nical/lyon (exact answers recomputed independently) and Axom (curve_curve cases). All strategies must agree.
 #include <catch2/catch.hpp>
 
+#include "intersection_checks.h"
+
 #include "test_support.h"
 
 #include <bezoutian/Curve_intersection.h>
@@ -52,16 +54,7 @@ const Curve_intersection_method all_methods[] = {Curve_intersection_method::defa
                                                   Curve_intersection_method::projection,
                                                   Curve_intersection_method::resolvent};
 
-void require_same(const Curve_intersection_result& a, const Curve_intersection_result& b) {
-  REQUIRE(a.points.size() == b.points.size());
-  for (std::size_t i = 0; i < a.points.size(); ++i) {
-    CHECK(a.points[i].s == b.points[i].s);
-    CHECK(a.points[i].t == b.points[i].t);
-    CHECK(a.points[i].multiplicity == b.points[i].multiplicity);
-    CHECK(a.points[i].kind == b.points[i].kind);
-  }
-  REQUIRE(a.overlaps.size() == b.overlaps.size());
-}
+using bezoutian_test::require_same;
 
 } // namespace
 

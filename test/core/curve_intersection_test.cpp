@@ -2,6 +2,8 @@
 // multiplicity 2 and 3, endpoint hits, overlaps, identical and degenerate curves, space curves, loops.
 #include <catch2/catch.hpp>
 
+#include "intersection_checks.h"
+
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_problem_generator.h>
 
@@ -22,16 +24,7 @@ const Curve_intersection_method all_methods[] = {Curve_intersection_method::defa
                                                   Curve_intersection_method::projection,
                                                   Curve_intersection_method::resolvent};
 
-template <int D>
-void require_same(const Curve_intersection_result& a, const Curve_intersection_result& b) {
-  REQUIRE(a.points.size() == b.points.size());
-  for (std::size_t i = 0; i < a.points.size(); ++i) {
-    CHECK(a.points[i].s == b.points[i].s);
-    CHECK(a.points[i].t == b.points[i].t);
-    CHECK(a.points[i].kind == b.points[i].kind);
-  }
-  REQUIRE(a.overlaps.size() == b.overlaps.size());
-}
+using bezoutian_test::require_same;
 
 // Polynomial curve from its power form (x(t), y(t)) given by coefficient lists.
 Curve2 power_curve(std::vector<Rational> x, std::vector<Rational> y) {

@@ -5,6 +5,8 @@
 // problems of degrees 2-6 (planar and space curves).
 #include <catch2/catch.hpp>
 
+#include "intersection_checks.h"
+
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_problem_generator.h>
 #include <bezoutian/Groebner_bivariate.h>
@@ -50,17 +52,7 @@ P2 random_polynomial(int ds, int dt, std::mt19937& rng) {
   return P2(rows.begin(), rows.end());
 }
 
-template <int D>
-void require_same(const Curve_intersection_result& a, const Curve_intersection_result& b) {
-  REQUIRE(a.points.size() == b.points.size());
-  for (std::size_t i = 0; i < a.points.size(); ++i) {
-    CHECK(a.points[i].s == b.points[i].s);
-    CHECK(a.points[i].t == b.points[i].t);
-    CHECK(a.points[i].multiplicity == b.points[i].multiplicity);
-    CHECK(a.points[i].kind == b.points[i].kind);
-  }
-  REQUIRE(a.overlaps.size() == b.overlaps.size());
-}
+using bezoutian_test::require_same;
 
 }  // namespace
 

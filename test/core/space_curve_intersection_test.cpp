@@ -4,6 +4,8 @@
 // common points, two partners for one parameter (no shape basis: exact fallback), a tangency.
 #include <catch2/catch.hpp>
 
+#include "intersection_checks.h"
+
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_problem_generator.h>
 
@@ -32,18 +34,7 @@ Rational eval(const std::vector<Rational>& f, const Rational& x) {
   return r;
 }
 
-// Same points (exact), kinds and overlaps.
-void require_same(const Curve_intersection_result& a, const Curve_intersection_result& b) {
-  REQUIRE(a.points.size() == b.points.size());
-  for (std::size_t i = 0; i < a.points.size(); ++i) {
-    CHECK(a.points[i].s == b.points[i].s);
-    CHECK(a.points[i].t == b.points[i].t);
-    CHECK(a.points[i].kind == b.points[i].kind);
-    CHECK(a.points[i].tangent == b.points[i].tangent);
-    CHECK(a.points[i].multiplicity == b.points[i].multiplicity);
-  }
-  CHECK(a.overlaps.size() == b.overlaps.size());
-}
+using bezoutian_test::require_same;
 
 // The exact default path (interval paths off) and the subresultant strategy as references.
 void require_same_as_exact(const Curve3& a, const Curve3& b) {

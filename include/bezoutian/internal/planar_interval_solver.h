@@ -148,9 +148,10 @@ inline bool planar_net_box(const Planar_interval_net& net, double b[4]) {
   return std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2]) && std::isfinite(b[3]);
 }
 
-/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves); `tri` is scratch space.
-inline void planar_net_halves(const Planar_interval_net& q, Planar_interval_net& left, Planar_interval_net& right,
-                           Planar_interval_net& tri) {
+/// Interval de Casteljau halves at 1/2 (enclosures of the exact halves) of a net of control points with any
+/// number of homogeneous coordinates (Net = std::vector<std::array<Planar_interval, K>>); `tri` is scratch space.
+template <class Net>
+void interval_net_halves(const Net& q, Net& left, Net& right, Net& tri) {
   tri = q;
   const std::size_t n = q.size();
   left.assign(1, tri[0]);
@@ -158,11 +159,15 @@ inline void planar_net_halves(const Planar_interval_net& q, Planar_interval_net&
   const Planar_interval half(0.5);
   for (std::size_t r = 1; r < n; ++r) {
     for (std::size_t j = 0; j + r < n; ++j)
-      for (int k = 0; k < 3; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
+      for (std::size_t k = 0; k < tri[j].size(); ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
     left.push_back(tri[0]);
     right.push_back(tri[n - 1 - r]);
   }
   std::reverse(right.begin(), right.end());
+}
+inline void planar_net_halves(const Planar_interval_net& q, Planar_interval_net& left, Planar_interval_net& right,
+                              Planar_interval_net& tri) {
+  interval_net_halves(q, left, right, tri);
 }
 
 /// Krawczyk contraction in MPFI: X <- K(X) ∩ X, `rounds` times or until no progress (X keeps every zero it held).

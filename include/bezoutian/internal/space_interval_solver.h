@@ -122,18 +122,7 @@ struct Space_interval_solver {
 
   static void halves(const Space_interval_net& q, Space_interval_net& left, Space_interval_net& right,
                      Space_interval_net& tri) {
-    tri = q;
-    const std::size_t n = q.size();
-    left.assign(1, tri[0]);
-    right.assign(1, tri[n - 1]);
-    const Planar_interval half(0.5);
-    for (std::size_t r = 1; r < n; ++r) {
-      for (std::size_t j = 0; j + r < n; ++j)
-        for (int k = 0; k < 4; ++k) tri[j][k] = (tri[j][k] + tri[j + 1][k]) * half;
-      left.push_back(tri[0]);
-      right.push_back(tri[n - 1 - r]);
-    }
-    std::reverse(right.begin(), right.end());
+    interval_net_halves(q, left, right, tri);
   }
 
   /// Jacobian enclosure of (G_1, G_2, G_3) over S x T (rows k - 1, columns d/ds, d/dt), enclosures of their values
