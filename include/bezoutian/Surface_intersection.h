@@ -51,6 +51,9 @@ struct Surface_intersection_options {
   /// Prove the genuine / phantom status along the arcs (internal/certified_lifting.h; subdivision topologies
   /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
   bool certify_lifting = true;
+  /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus; the
+  /// spans left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci.
+  std::size_t lifting_exclusion_budget = 500;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
@@ -337,6 +340,8 @@ template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
                      Lift lift_point) {
   if (L.topology_method != "subdivision" || !o.certify_lifting) return;
+  Exclusion_budget budget;
+  budget.left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     std::vector<std::array<double, 2>> partner;
@@ -350,7 +355,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     }
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
-                              float_genuine);
+                              float_genuine, budget);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided) {

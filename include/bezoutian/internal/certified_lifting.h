@@ -34,7 +34,20 @@
 namespace bezoutian {
 namespace internal {
 
-enum class Partner_status { genuine, phantom, undecided };
+/// outside: the partner found is proved outside the partner domain, the exclusion of every other partner (which
+/// makes the span phantom) not yet tried (internal to certify_edge_partners: spans are excluded in runs).
+enum class Partner_status { genuine, phantom, undecided, outside };
+
+/// Bounds the number of exclusion tests (no_genuine_partner, up to 1024 partner pieces each) of one locus: the
+/// phantom proofs are the costly part; when the budget is spent the remaining spans stay undecided.
+struct Exclusion_budget {
+  std::size_t left = std::numeric_limits<std::size_t>::max();
+  bool take() {
+    if (left == 0) return false;
+    --left;
+    return true;
+  }
+};
 
 /// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
 /// (0 or 1); T its span; W = (other coordinate, y1, y2). On success W is replaced by K (a tighter enclosure).
@@ -180,7 +193,8 @@ inline bool prove_zero_curve(const Partner_equations& eq, int axis, const Double
 /// T x K_v has any partner in the domain; otherwise undecided.
 inline Partner_status status_from_partner(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                           int axis, const Double_interval& T, const std::array<Double_interval, 3>& K,
-                                          const std::vector<std::array<Double_interval, 2>>* start) {
+                                          const std::vector<std::array<Double_interval, 2>>* start,
+                                          bool defer_exclusion = false, Exclusion_budget* budget = nullptr) {
   using D = Double_interval;
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
     return Partner_status::undecided;  // the trivial partner y = 0 is not a partner
@@ -195,7 +209,9 @@ inline Partner_status status_from_partner(const Partner_equations& eq, const Par
   const bool outside = interval_disjoint(P[0], domain.u0, domain.u1) || interval_disjoint(P[1], domain.v0, domain.v1) ||
                        interval_disjoint(Q[0], domain.u0, domain.u1) || interval_disjoint(Q[1], domain.v0, domain.v1);
   if (!outside) return Partner_status::undecided;  // the partner crosses the domain boundary over T
+  if (defer_exclusion) return Partner_status::outside;
   const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
+  if (budget && !budget->take()) return Partner_status::undecided;
   return no_genuine_partner(eq, box, domain, 1024, start) ? Partner_status::phantom : Partner_status::undecided;
 }
 
@@ -218,7 +234,9 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
                                             const Parameter_box& cell,
                                             const std::function<const std::vector<std::array<Double_interval, 2>>*()>& start,
                                             std::array<Double_interval, 2>* partner = nullptr,
-                                            bool try_cell_exclusion = true) {
+                                            bool try_cell_exclusion = true, bool defer_exclusion = false,
+                                            std::array<Double_interval, 3>* enclosure = nullptr,
+                                            Exclusion_budget* budget = nullptr) {
   using D = Double_interval;
   // Fallback phantom proof without a partner: the arc points over T lie in T x (the cell's range), so excluding
   // every partner there suffices (a wider box than T x K_v, but no Krawczyk proof is needed). Costly when it
@@ -227,6 +245,7 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
     if (unbounded || !try_cell_exclusion) return Partner_status::undecided;
     const Parameter_box box = axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), cell.v0, cell.v1}
                                         : Parameter_box{cell.u0, cell.u1, Rational(T.lo), Rational(T.hi)};
+    if (budget && !budget->take()) return Partner_status::undecided;
     return no_genuine_partner(eq, box, domain, 256, start()) ? Partner_status::phantom : Partner_status::undecided;
   };
   std::array<D, 3> W = W0, K;
@@ -242,7 +261,10 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
     return cell_phantom();  // the trivial partner y = 0 is not a partner
   if (partner) *partner = {K[1], K[2]};
-  return status_from_partner(eq, domain, unbounded, axis, T, K, start());
+  if (enclosure) *enclosure = K;
+  const Partner_status st = status_from_partner(eq, domain, unbounded, axis, T, K, nullptr, true);
+  if (st != Partner_status::outside || defer_exclusion) return st;
+  return status_from_partner(eq, domain, unbounded, axis, T, K, start(), false, budget);
 }
 
 /// Result of certify_edge_partners: status per polyline point and the undecided fraction of the edge.
@@ -278,7 +300,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                                                       bool unbounded, const Curve_topology_edge& e,
                                                       const std::vector<std::array<double, 2>>& partner,
                                                       const std::vector<bool>& partner_known,
-                                                      const std::vector<bool>& float_genuine, int max_halvings = 6) {
+                                                      const std::vector<bool>& float_genuine, Exclusion_budget& budget,
+                                                      int max_halvings = 6) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -317,9 +340,37 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
     auto start = [&]() -> const std::vector<std::array<D, 2>>* {
       if (!computed) {
         computed = true;
-        cell_failed = !no_genuine_partner(eq, pc.cell, domain, 1024, nullptr, &survivors);
+        cell_failed = !budget.take() || !no_genuine_partner(eq, pc.cell, domain, 1024, nullptr, &survivors);
       }
       return cell_failed && survivors.empty() ? nullptr : &survivors;
+    };
+    // Spans whose partner is proved outside the domain are excluded together: one exclusion on the hull of a run of
+    // consecutive such spans (T x K_v each) is far cheaper than one per span; if it fails, one per span.
+    struct Outside_span {
+      std::size_t i;
+      D T, V;
+    };
+    std::vector<Outside_span> run;
+    auto flush = [&]() {
+      if (run.empty()) return;
+      D H = run[0].T, HV = run[0].V;
+      for (const auto& r : run)
+        H = D{std::min(H.lo, r.T.lo), std::max(H.hi, r.T.hi)}, HV = D{std::min(HV.lo, r.V.lo), std::max(HV.hi, r.V.hi)};
+      auto box_of = [&](const D& t, const D& v) {
+        return axis == 0 ? Parameter_box{Rational(t.lo), Rational(t.hi), Rational(v.lo), Rational(v.hi)}
+                         : Parameter_box{Rational(v.lo), Rational(v.hi), Rational(t.lo), Rational(t.hi)};
+      };
+      const bool all = run.size() > 1 && budget.take() && no_genuine_partner(eq, box_of(H, HV), domain, 1024, start());
+      for (const auto& r : run) {
+        const bool ok = all || (budget.take() && no_genuine_partner(eq, box_of(r.T, r.V), domain, 1024, start()));
+        if (ok) {
+          merge(r.i, Partner_status::phantom, none);
+          merge(r.i + 1, Partner_status::phantom, none);
+        } else {
+          undecided += r.T.hi - r.T.lo;
+        }
+      }
+      run.clear();
     };
     for (std::size_t i = pc.first; i < pc.last; ++i) {
       const D a = coord(i, axis), b = coord(i + 1, axis);
@@ -351,10 +402,20 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         std::array<D, 3> Ws = W, P;  // the box predicted from the tangent at the middle of the span, if any
         if (predict_partner_box(eq, axis, s.T, {W[0].mid(), W[1].mid(), W[2].mid()}, P)) Ws = P;
         std::array<D, 2> y = none;
+        std::array<D, 3> K;
         const bool phantom_seen = !float_genuine[i] || !float_genuine[i + 1];
-        const Partner_status st =
-            classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y, phantom_seen && s.depth <= 2);
-        if (st == Partner_status::undecided && s.depth < max_halvings) {
+        const Partner_status st = classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y,
+                                                        phantom_seen && s.depth <= 2, s.depth == 0, &K, &budget);
+        if (st == Partner_status::outside) {  // the whole span (depth 0): joins the run, decided at the flush
+          run.push_back({i, s.T, K[0]});
+          left = right = Partner_status::outside;
+          continue;
+        }
+        // halving pays where the genuine status changes or Krawczyk needs a shorter span; between two phantom
+        // points it mostly repeats failing exclusions (costly), so it stops early there
+        const bool phantom_both = !float_genuine[i] && !float_genuine[i + 1];
+        const int limit = phantom_both ? (budget.left == 0 ? 0 : 2) : max_halvings;
+        if (st == Partner_status::undecided && s.depth < limit) {
           const double mid = s.T.mid();
           stack.push_back({D{mid, s.T.hi}, s.depth + 1});
           stack.push_back({D{s.T.lo, mid}, s.depth + 1});
@@ -364,11 +425,14 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         if (s.T.lo <= T.lo) left = st, left_y = y;
         if (s.T.hi >= T.hi) right = st, right_y = y;
       }
+      if (left == Partner_status::outside) continue;  // pending in the run
+      flush();
       // the polyline may run either way along the graph coordinate
       const bool increasing = a.mid() <= b.mid();
       merge(i, increasing ? left : right, increasing ? left_y : right_y);
       merge(i + 1, increasing ? right : left, increasing ? right_y : left_y);
     }
+    flush();
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
   return out;
