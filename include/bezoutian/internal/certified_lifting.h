@@ -49,6 +49,20 @@ struct Exclusion_budget {
   }
 };
 
+/// Inverse of a 3 x 3 matrix of doubles by its adjugate (floating point: used for preconditioners and Newton
+/// steps, never for a decision); false if the determinant is zero or not finite.
+inline bool invert_3x3(const double (&A)[3][3], double (&C)[3][3]) {
+  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+  if (!std::isfinite(det) || det == 0) return false;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+      C[r][c] = (A[r1][c1] * A[r2][c2] - A[r1][c2] * A[r2][c1]) / det;  // adjugate / det
+    }
+  return true;
+}
+
 /// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
 /// (0 or 1); T its span; W = (other coordinate, y1, y2). On success W is replaced by K (a tighter enclosure).
 inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, const Double_interval& T,
@@ -71,15 +85,8 @@ inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, c
   double A[3][3];
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) A[r][c] = Jc[r][q[c]].mid();
-  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-  if (!std::isfinite(det) || det == 0) return false;
   double C[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-      C[r][c] = (A[r1][c1] * A[r2][c2] - A[r1][c2] * A[r2][c1]) / det;  // adjugate / det
-    }
+  if (!invert_3x3(A, C)) return false;
   // mean-value form in the parameter too (much tighter than E(T, m) in naive interval arithmetic):
   // E(t, m) in E(t_m, m) + dE/dx_axis(T, W) (T - t_m) for t in T
   std::array<D, 3> EW;
@@ -138,18 +145,9 @@ inline bool predict_partner_box(const Partner_equations& eq, int axis, const Dou
       for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
       b[r] = it < 11 ? E[r].mid() : J[r][axis].mid();  // the last round solves for the tangent instead
     }
-    const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
-                       A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) + A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-    if (!std::isfinite(det) || det == 0) return false;
-    double x[3];
-    for (int r = 0; r < 3; ++r) {  // Cramer
-      double M[3][3];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) M[i][j] = j == r ? b[i] : A[i][j];
-      x[r] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
-             det;
-    }
+    double Ai[3][3], x[3];
+    if (!invert_3x3(A, Ai)) return false;
+    for (int r = 0; r < 3; ++r) x[r] = Ai[r][0] * b[0] + Ai[r][1] * b[1] + Ai[r][2] * b[2];
     if (it < 11) {
       step = std::fabs(x[0]) + std::fabs(x[1]) + std::fabs(x[2]);
       for (int c = 0; c < 3; ++c) w[c] -= x[c];
