@@ -8,6 +8,7 @@
 #include <bezoutian/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
 #include "power_patch.h"
+#include "../../benchmark/random_patches.h"
 
 #include <set>
 
@@ -240,6 +241,29 @@ double to_polyline(const std::array<double, 3>& p, const Run& poly) {
   }
   return best;
 }
+// Every `stride`-th traced point lies on D = 0: first-order distance |D| / |grad D| < 1e-6, with D and its gradient
+// evaluated exactly at the point's double coordinates (independent of the floating-point sampling that produced
+// the point). Samples bisected on the power form of a high-degree D were off the curve.
+void check_traced_points_on_curve(const Surface_locus& L, std::size_t stride) {
+  const Polynomial_2<Integer>& D = L.equation.square_free;
+  for (const auto& arc : L.arcs)
+    for (std::size_t i = 0; i < arc.points.size(); i += stride) {
+      const Q x(arc.points[i].projection[0]), y(arc.points[i].projection[1]);
+      Q f(0), fx(0), fy(0);  // Horner in y over the rows c_j(x), c_j'(x)
+      for (int j = D.degree(); j >= 0; --j) {
+        Q c(0), cx(0);
+        for (int k = D[j].degree(); k >= 0; --k) {
+          cx = cx * x + c;
+          c = c * x + Q(D[j][k]);
+        }
+        fy = fy * y + f;
+        f = f * y + c;
+        fx = fx * y + cx;
+      }
+      const double g = std::sqrt(CGAL::to_double(fx * fx + fy * fy));
+      CHECK(std::fabs(CGAL::to_double(f)) <= 1e-6 * g);
+    }
+}
 // genuine runs (at least 2 points) of the certified intersection of two teapot patches, checked on both patches;
 // also the exact contact points
 void genuine_runs(const std::vector<Patch>& patches, int a, int b, std::vector<Run>& runs,
@@ -254,6 +278,7 @@ void genuine_runs(const std::vector<Patch>& patches, int a, int b, std::vector<R
     CHECK_FALSE(c.shared_curve);  // handle and spout are not glued to the body: isolated contacts
     contacts.push_back(c.point);
   }
+  check_traced_points_on_curve(L, 8);
   std::size_t genuine = 0, genuine_proved = 0;
   for (const auto& arc : L.arcs)
     for (const auto& q : arc.points) genuine += q.genuine, genuine_proved += q.genuine && q.status_proved;
@@ -384,4 +409,33 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
   CHECK(on_line_proved == on_line);  // the whole segment, both sides of the transition, is decided by proofs
   CHECK(genuine_proved > 10);
   CHECK(phantom_proved > 5);
+}
+
+// Regression: on this random bicubic pair (the first (3,3) polynomial pair of benchmark/surface_benchmark.cpp, D of
+// total degree 81) the arc samples were bisected on the power form of D and whole arcs of them sat on the cells'
+// edges, off the curve. Every traced point must lie on D = 0 (exact evaluation), and proved genuine points on both
+// patches.
+TEST_CASE("bicubic pair: every traced point lies on D = 0", "[surface][sampling]") {
+  std::mt19937 g(20261122);
+  std::vector<Patch> made;  // the benchmark's sequence: (m,n) x rational x self/pair x 2 problems, two patches each
+  for (auto mn : std::vector<std::pair<int, int>>{{2, 2}, {3, 2}, {3, 3}})
+    for (bool rational : {false, true})
+      for (int k = 0; k < 4 && made.size() < 38; ++k) {
+        made.push_back(random_patch(g, mn.first, mn.second, rational));
+        made.push_back(random_patch(g, mn.first, mn.second, rational));
+      }
+  REQUIRE(made.size() == 38);
+  const Patch &a = made[36], &b = made[37];  // problem 18
+  const Surface_locus L = intersection_locus(a, b);
+  REQUIRE(L.topology_computed);
+  CHECK(L.equation.total_degree() == 81);
+  check_traced_points_on_curve(L, 4);
+  std::size_t proved_genuine = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points)
+      if (q.genuine && q.status_proved) {
+        ++proved_genuine;
+        CHECK(distance3(a.evaluate(q.first[0], q.first[1]), b.evaluate(q.second[0], q.second[1])) < 1e-7);
+      }
+  CHECK(proved_genuine > 100);
 }
