@@ -72,8 +72,10 @@ inline const char* to_string(Curve_intersection_kind k) {
 /// they may be lazy (Algebraic_real::is_lazy(): a proved enclosure, made exact on demand; see lazy_path).
 struct Curve_intersection_point {
   Algebraic_real s, t;
-  /// 1 for a transversal crossing; for tangencies the multiplicity of the root of the eliminants
-  /// (min over R(s) and T(t)), which equals the intersection multiplicity for a generic projection.
+  /// 1 for a transversal crossing; for tangencies the intersection multiplicity of the pair of branches: the
+  /// multiplicity of the root of the eliminants (min over R(s) and T(t)) when a line s = s_i or t = t_j holds no
+  /// other intersection, otherwise that of the sheared system's root (doc/curve_intersection.md step 5). In space
+  /// it is computed on a projection (generic, so it equals the multiplicity of the space curves).
   int multiplicity = 1;
   Curve_intersection_kind kind = Curve_intersection_kind::transversal;
   /// Tangent directions parallel (decided exactly; also reported for endpoint hits).
@@ -907,6 +909,13 @@ class Curve_intersection_engine {
       for (int j = i + 1; j < D; ++j) parallel = parallel && da[i] * db[j] - da[j] * db[i] == 0;
     p.tangent = m >= 2 && parallel;
     p.multiplicity = p.tangent ? m : 1;
+    // m counts every branch of one curve through the point against the other curve's branch, so it is the
+    // multiplicity of this pair of branches only if one curve passes once; m = 2 is exact for a tangency anyway.
+    if (p.tangent && m >= 3) {
+      std::vector<P2> F;
+      for (int k = 1; k <= D; ++k) F.push_back(cross_term(H1_[k], H2_[0], H2_[k], H1_[0]));
+      p.multiplicity = local_multiplicity(F, a, b);
+    }
     const bool end = a == 0 || a == 1 || b == 0 || b == 1;
     p.kind = end ? Curve_intersection_kind::endpoint
                  : (p.tangent ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal);
@@ -1141,57 +1150,94 @@ class Curve_intersection_engine {
       if (ps[i] == unresolved) us.push_back(int(i));
     for (std::size_t j = 0; j < pt.size(); ++j)
       if (pt[j] == unresolved) ut.push_back(int(j));
-    bool all_rational = true;
-    for (int i : us) all_rational = all_rational && rs[i].root.is_rational();
-    for (int j : ut) all_rational = all_rational && rt[j].root.is_rational();
-    if (!us.empty() && !ut.empty()) {
-      if (all_rational) {
-        for (int i : us)
-          for (int j : ut)
-            if (point_at<D>(H1_, rs[i].root.rational_value()) == point_at<D>(H2_, rt[j].root.rational_value()))
-              pairs.push_back({i, j});
-      } else {
-        sheared_pairs(F, rs, rt, us, ut, pairs);
-      }
-    }
+    // Neither elimination describes such a point (S11 vanishes on both lines), so its tangency and multiplicity come
+    // from the sheared system too, where the point is alone on its line u = u_k.
+    std::vector<Sheared_pair> sheared;
+    if (!us.empty() && !ut.empty()) sheared = sheared_pairs(F, rs, rt, us, ut);
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (const auto& p : pairs) res.points.push_back(make_point(rs[p.first], rt[p.second], es[0], et[0], ps[p.first] >= 0));
+    for (const auto& p : sheared) res.points.push_back(sheared_point(rs[p.i], rt[p.j], p));
     CI_TICK("points");
   }
 
   // Shear s = u - lambda t: for generic lambda distinct solutions have distinct u; each root u_k of
   // Res_t(G1(u - lambda t, t), G2(...)) in [0, 1 + lambda] gives t = -S10(u_k)/S11(u_k) and s = u_k - lambda t, located
   // among the unresolved roots by exact sign decisions (polynomials in u evaluated at the algebraic u_k).
-  void sheared_pairs(const std::vector<P2>& F, const std::vector<Isolated_root>& rs, const std::vector<Isolated_root>& rt,
-                     const std::vector<int>& us, const std::vector<int>& ut, std::vector<std::pair<int, int>>& pairs) const {
+  // The system in (u, t) with s = u - lambda t: f(u - lambda t, t) for every f.
+  static std::vector<P2> sheared_system(const std::vector<P2>& F, int lambda) {
     const P2 U(P1(Integer(0), Integer(1)));
     const P2 T(P1(0), P1(1));
+    const P2 S = U - T * P2(lambda);
+    std::vector<P2> Fs;
+    for (const P2& f : F) {
+      // f(S, t) = sum_j t^j f_j(S): Horner in the inner variable
+      P2 r(0);
+      for (int j = t_degree(f); j >= 0; --j) {
+        P2 fj(0);
+        for (int i = f[j].degree(); i >= 0; --i) fj = fj * S + P2(f[j][i]);
+        r += fj * CGAL::ipower(T, j);
+      }
+      Fs.push_back(r);
+    }
+    return Fs;
+  }
+
+  static bool sheared_elimination(const std::vector<P2>& Fs, Elimination& e) {
+    for (const auto& pr : candidate_pairs(Fs)) {
+      e = eliminate(pr.first, pr.second);
+      if (e.ok) return true;
+    }
+    return false;
+  }
+
+  // Intersection multiplicity of the rational solution (a, b) of F = 0: the multiplicity of u0 = a + lambda b as a
+  // root of the sheared resultant, for a shear that leaves (a, b) alone on its line u = u0 (S11(u0) != 0: the gcd
+  // of the pair on that line has degree 1; a leading coefficient survives: no solution at infinity).
+  int local_multiplicity(const std::vector<P2>& F, const Rational& a, const Rational& b) const {
     for (int lambda = 1; lambda <= 12; ++lambda) {
-      const P2 S = U - T * P2(lambda);
-      std::vector<P2> Fs;
-      for (const P2& f : F) {
-        // f(S, t) = sum_j t^j f_j(S): Horner in the inner variable
-        P2 r(0);
-        for (int j = t_degree(f); j >= 0; --j) {
-          P2 fj(0);
-          for (int i = f[j].degree(); i >= 0; --i) fj = fj * S + P2(f[j][i]);
-          r += fj * CGAL::ipower(T, j);
-        }
-        Fs.push_back(r);
-      }
-      bool ok = false;
       Elimination e;
-      for (const auto& pr : candidate_pairs(Fs)) {
-        e = eliminate(pr.first, pr.second);
-        if (e.ok) {
-          ok = true;
-          break;
-        }
+      if (!sheared_elimination(sheared_system(F, lambda), e)) continue;
+      const Rational u0 = a + Rational(lambda) * b;
+      auto value = [&](const P1& f) {
+        Rational r(0);
+        for (int i = f.degree(); i >= 0; --i) r = r * u0 + Rational(f[i]);
+        return r;
+      };
+      if (CGAL::is_zero(value(e.S11))) continue;
+      if (CGAL::is_zero(value(e.G1[t_degree(e.G1)])) && CGAL::is_zero(value(e.G2[t_degree(e.G2)]))) continue;
+      const P1 lin(-u0.numerator(), u0.denominator());  // den u - num
+      P1 R = e.R;
+      int m = 0;
+      for (;;) {
+        P1 q, r;
+        Integer d;
+        P1::pseudo_division(R, lin, q, r, d);
+        if (!CGAL::is_zero(r)) break;
+        R = q;
+        ++m;
       }
-      if (!ok) continue;
+      return m;
+    }
+    throw Error("intersect_curves: no separating shear found for the multiplicity of a tangency");
+  }
+
+  struct Sheared_pair {
+    int i, j;           // indices into the s- and t-roots
+    Isolated_root u;    // u_k = s + lambda t, a root of the sheared resultant (its multiplicity: see sheared_point)
+    P1 S10, S11;        // t = -S10(u)/S11(u), S11(u_k) != 0
+    int lambda;
+  };
+
+  std::vector<Sheared_pair> sheared_pairs(const std::vector<P2>& F, const std::vector<Isolated_root>& rs,
+                                          const std::vector<Isolated_root>& rt, const std::vector<int>& us,
+                                          const std::vector<int>& ut) const {
+    for (int lambda = 1; lambda <= 12; ++lambda) {
+      const std::vector<P2> Fs = sheared_system(F, lambda);
+      Elimination e;
+      if (!sheared_elimination(Fs, e)) continue;
       std::vector<Isolated_root> ru = isolate_real_roots(e.R, Rational(0), Rational(1 + lambda));
-      std::vector<std::pair<int, int>> found;
+      std::vector<Sheared_pair> found;
       bool good = true;
       for (const Isolated_root& r : ru) {
         const Algebraic_real& u = r.root;
@@ -1220,13 +1266,44 @@ class Curve_intersection_engine {
         if (F.size() > 2 || Fs.size() > 2) {
           for (const P2& f : Fs) all = all && root_sign(u, substitute(f, -e.S10, e.S11)) == 0;
         }
-        if (all) found.push_back({i, j});
+        if (all) found.push_back({i, j, r, e.S10, e.S11, lambda});
       }
       if (!good) continue;
-      pairs.insert(pairs.end(), found.begin(), found.end());
-      return;
+      return found;
     }
     throw Error("intersect_curves: no separating shear found for a degenerate configuration");
+  }
+
+  // A point found by the shear: u_k is a root of Res_t of the sheared pair whose line u = u_k carries this point
+  // only (S11(u_k) != 0 and a leading coefficient survives, checked in sheared_pairs), with s = (u S11 + lambda
+  // S10)/S11, t = -S10/S11. So the multiplicity of u_k is the intersection multiplicity of the point, and the
+  // tangents are parallel iff every 2x2 minor of (D1(s), D2(t)) vanishes there: minor(s(u), t(u)) is a rational
+  // function of u, an exact univariate sign at u_k. (The eliminations in s or t cannot decide this: S11 vanishes
+  // on both lines through the point, e.g. at a node shared by both curves, lyon-loops-nested.)
+  Curve_intersection_point sheared_point(const Isolated_root& s, const Isolated_root& t, const Sheared_pair& q) const {
+    Curve_intersection_point p;
+    p.s = s.root;
+    p.t = t.root;
+    p.tangent = false;
+    if (q.u.multiplicity >= 2 && !tangents_apart(s.root, t.root)) {
+      std::array<P1, D> da, db;
+      for (int k = 0; k < D; ++k) {
+        da[k] = CGAL::differentiate(H1_[k + 1]) * H1_[0] - H1_[k + 1] * CGAL::differentiate(H1_[0]);
+        db[k] = CGAL::differentiate(H2_[k + 1]) * H2_[0] - H2_[k + 1] * CGAL::differentiate(H2_[0]);
+      }
+      const P1 su = P1(Integer(0), Integer(1)) * q.S11 + q.S10 * P1(q.lambda);
+      p.tangent = true;
+      for (int i = 0; i < D && p.tangent; ++i)
+        for (int j = i + 1; j < D && p.tangent; ++j) {
+          const P2 m = lift_outer(db[j]) * P2(da[i]) - lift_outer(db[i]) * P2(da[j]);  // s inner, t outer
+          p.tangent = root_sign(q.u.root, substitute_affine(m, su, -q.S10, q.S11)) == 0;
+        }
+    }
+    p.multiplicity = p.tangent ? q.u.multiplicity : 1;
+    auto end = [](const Algebraic_real& x) { return x.is_rational() && (x == 0 || x == 1); };
+    p.kind = (end(p.s) || end(p.t)) ? Curve_intersection_kind::endpoint
+                                    : (p.tangent ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal);
+    return p;
   }
 
   Curve_intersection_point make_point(const Isolated_root& s, const Isolated_root& t, const Elimination& es,

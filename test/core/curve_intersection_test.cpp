@@ -256,6 +256,51 @@ TEST_CASE("tangencies of multiplicity 2 and 3", "[curve_intersection]") {
   for (auto m : all_methods) require_same<2>(r, intersect_curves(parabola, half, m));
 }
 
+TEST_CASE("a node shared by both curves: tangency and multiplicity of each pair of branches", "[curve_intersection]") {
+  // Every pair lies on a line s = s_i and a line t = t_j holding two intersections each, so neither elimination
+  // decides it (the sheared system does).
+  // (a) lyon-loops-nested: two cubic loops from the origin, C1 = 10 C2, control points of C2 (0,0), (-1,1), (1,1),
+  // (0,0). At s = t = 0: C2'(0) = 3(-1,1), C2''(0) = 6(3,-1), cross product -2*18 != 0, so both branches are
+  // tangent with curvatures k and k/10 != k: contact order 1, intersection multiplicity 2. Likewise at s = t = 1
+  // (C2'(1) = 3(-1,-1), C2''(1) = 6(-3,-1)). The pairs (0,1), (1,0) join transversal branches: multiplicity 1.
+  const Curve2 c2(std::vector<Curve2::Point>{{0, 0}, {-1, 1}, {1, 1}, {0, 0}});
+  const Curve2 c1(std::vector<Curve2::Point>{{0, 0}, {-10, 10}, {10, 10}, {0, 0}});
+  for (auto m : all_methods) {
+    const auto r = intersect_curves(c1, c2, m);
+    REQUIRE(r.points.size() == 4);
+    for (const auto& p : r.points) {
+      INFO(int(m) << ": " << p.s.to_double() << " " << p.t.to_double());
+      const bool same_end = p.s == p.t;
+      CHECK(p.tangent == same_end);
+      CHECK(p.multiplicity == (same_end ? 2 : 1));
+      CHECK(p.kind == Curve_intersection_kind::endpoint);
+    }
+  }
+  // (b) The same at irrational parameters: A(x) = (x^2 - 1/2, x (x^2 - 1/2)), x = 2s - 1, has a node at the origin
+  // at x = +-1/sqrt 2 (branch directions (+-sqrt 2, 1)), and B = 2 A. y^2 = x^2 (x + 1/2) and y^2 = x^2 (x/2 + 1/2)
+  // meet only at the origin. A's branch at x and B's branch at the same x are tangent (a homothety keeps
+  // directions) with curvatures in the ratio 2 (A' x A'' = 6 x^2 + 1 = 4 != 0): multiplicity 2; the other pairs
+  // are transversal. So 4 pairs, s = t for the two tangencies, s + t = 1 for the two crossings.
+  const Curve2 a = power_curve({Rational(1, 2), -4, 4}, {Rational(-1, 2), 5, -12, 8});
+  const Curve2 b = power_curve({1, -8, 8}, {-1, 10, -24, 16});
+  const Polynomial_1<Integer> node(Integer(1), Integer(-8), Integer(8));  // (2s-1)^2 = 1/2
+  for (auto m : all_methods) {
+    const auto r = intersect_curves(a, b, m);
+    REQUIRE(r.points.size() == 4);
+    int tangencies = 0;
+    for (const auto& p : r.points) {
+      CHECK(p.s.sign_of(node) == 0);
+      CHECK(p.t.sign_of(node) == 0);
+      const bool same = p.s == p.t;
+      tangencies += same;
+      CHECK(p.tangent == same);
+      CHECK(p.multiplicity == (same ? 2 : 1));
+      CHECK(p.kind == (same ? Curve_intersection_kind::tangent : Curve_intersection_kind::transversal));
+    }
+    CHECK(tangencies == 2);
+  }
+}
+
 TEST_CASE("endpoints, overlaps, identical and degenerate curves", "[curve_intersection]") {
   const Curve2 a(std::vector<Curve2::Point>{{0, 0}, {Rational(1, 2), 1}, {1, 0}});
   // segments meeting at an end
