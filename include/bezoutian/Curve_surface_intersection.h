@@ -9,6 +9,7 @@
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/internal/exact_linear_algebra.h>
+#include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/Polynomial_matrix_determinant.h>
 #include <bezoutian/Rational_bezier_curve.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -300,6 +301,198 @@ inline std::vector<Isolated_root> separated_roots(const Z1& f, const Rational& a
   return r;
 }
 
+// ------------------------------------------------------------------ fibres with several preimages
+// At a root r_i of R where the kernel of M(C(r_i)) does not give a unique preimage, every intersection
+// (r_i, u, v) has u a root of U and v a root of V (compute_eliminants), so the intersections over r_i are among
+// the grid points (r_i, u_j, v_k). Each grid point is excluded by interval evaluation of
+// F_k(r,u,v) = W(r) Phi_k(u,v) - X_k(r) Phi_0(u,v), proved by Krawczyk's test, or decided exactly (rational).
+
+using Interval = Mpfi_interval;
+
+inline Rational power_of_two_inverse(int e) {
+  Rational q;  // fresh object (CGAL::Gmpq copies share their mpq_t)
+  mpq_set_ui(q.mpq(), 1, 1);
+  mpq_div_2exp(q.mpq(), q.mpq(), static_cast<mp_bitcnt_t>(e));
+  return q;
+}
+
+inline Rational value_at(const Z1& f, const Rational& x) {
+  Rational r(0);
+  for (int i = f.degree(); i >= 0; --i) r = r * x + Rational(f[i]);
+  return r;
+}
+
+inline Rational value_at(const Z2& f, const Rational& u, const Rational& v) {
+  Rational r(0);
+  for (int j = f.degree(); j >= 0; --j) r = r * v + value_at(f[j], u);
+  return r;
+}
+
+inline Interval value_at(const Z2& f, const Interval& u, const Interval& v) {
+  Interval r = Interval::point(0, u.prec());
+  for (int j = f.degree(); j >= 0; --j) r = r * v + Interval::horner(f[j], u);
+  return r;
+}
+
+inline Z2 derivative_u(const Z2& f) {
+  std::vector<Z1> c;
+  for (int j = 0; j <= f.degree(); ++j) c.push_back(CGAL::differentiate(f[j]));
+  return Z2(c.begin(), c.end());
+}
+
+inline Z2 derivative_v(const Z2& f) {
+  std::vector<Z1> c;
+  for (int j = 1; j <= f.degree(); ++j) c.push_back(f[j] * Z1(Integer(j)));
+  if (c.empty()) return Z2(0);
+  return Z2(c.begin(), c.end());
+}
+
+inline std::size_t bit_size(const Z1& f) {
+  std::size_t b = 1;
+  for (int i = 0; i <= f.degree(); ++i) b = std::max<std::size_t>(b, mpz_sizeinbase(f[i].mpz(), 2));
+  return b;
+}
+
+/// The system F_k(r,u,v) = W(r) Phi_k(u,v) - X_k(r) Phi_0(u,v), k = 1..3 (du-1989 eq. 2.8 up to sign), with its
+/// partial derivatives, for interval evaluation (outward rounding).
+struct Fibre_system {
+  std::array<Z1, 4> H, dH;
+  std::array<Z2, 4> P, Pu, Pv;
+  std::size_t bits = 1;
+
+  Fibre_system(const std::array<Z1, 4>& h, const std::array<Z2, 4>& phi) : H(h), P(phi) {
+    for (int k = 0; k < 4; ++k) {
+      dH[k] = CGAL::differentiate(H[k]);
+      Pu[k] = derivative_u(P[k]);
+      Pv[k] = derivative_v(P[k]);
+      bits = std::max(bits, bit_size(H[k]));
+      for (int j = 0; j <= P[k].degree(); ++j) bits = std::max(bits, bit_size(P[k][j]));
+    }
+  }
+
+  void values(const std::array<Interval, 3>& x, std::array<Interval, 3>& F) const {
+    const Interval w = Interval::horner(H[0], x[0]), p0 = value_at(P[0], x[1], x[2]);
+    for (int k = 1; k <= 3; ++k)
+      F[k - 1] = w * value_at(P[k], x[1], x[2]) - Interval::horner(H[k], x[0]) * p0;
+  }
+
+  void jacobian(const std::array<Interval, 3>& x, std::vector<std::vector<Interval>>& J) const {
+    const Interval w = Interval::horner(H[0], x[0]), dw = Interval::horner(dH[0], x[0]);
+    const Interval p0 = value_at(P[0], x[1], x[2]), p0u = value_at(Pu[0], x[1], x[2]),
+                   p0v = value_at(Pv[0], x[1], x[2]);
+    for (int k = 1; k <= 3; ++k) {
+      const Interval xk = Interval::horner(H[k], x[0]);
+      J[k - 1][0] = dw * value_at(P[k], x[1], x[2]) - Interval::horner(dH[k], x[0]) * p0;
+      J[k - 1][1] = w * value_at(Pu[k], x[1], x[2]) - xk * p0u;
+      J[k - 1][2] = w * value_at(Pv[k], x[1], x[2]) - xk * p0v;
+    }
+  }
+
+  /// Exact test at a rational triple: 0 not a solution, 1 simple solution, 2 singular solution. The affine
+  /// Jacobian [C'(r) | -Phi_u | -Phi_v] has the columns (X_k' W - X_k W')/W^2, (Phi_k,u Phi_0 - Phi_k Phi_0,u)/Phi_0^2,
+  /// ...; positive column factors do not change its rank.
+  int exact(const Rational& r, const Rational& u, const Rational& v) const {
+    const Rational w = value_at(H[0], r), p0 = value_at(P[0], u, v);
+    for (int k = 1; k <= 3; ++k)
+      if (w * value_at(P[k], u, v) != value_at(H[k], r) * p0) return 0;
+    const Rational dw = value_at(dH[0], r), p0u = value_at(Pu[0], u, v), p0v = value_at(Pv[0], u, v);
+    Rational a[3][3];
+    for (int k = 1; k <= 3; ++k) {
+      a[k - 1][0] = value_at(dH[k], r) * w - value_at(H[k], r) * dw;
+      a[k - 1][1] = value_at(Pu[k], u, v) * p0 - value_at(P[k], u, v) * p0u;
+      a[k - 1][2] = value_at(Pv[k], u, v) * p0 - value_at(P[k], u, v) * p0v;
+    }
+    const Rational det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                         a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    return CGAL::is_zero(det) ? 2 : 1;
+  }
+};
+
+/// A root x of a polynomial with an open interval (lo, hi) that contains no other root of that polynomial.
+struct Root_window {
+  Algebraic_real x;
+  Rational lo, hi;
+};
+
+/// Window of a root x in [0,1] of P: the isolating interval clipped to [0,1] for an irrational x (the roots come
+/// from separated_roots on [0,1], pairwise disjoint); for a rational x = a/b, (x - w, x + w) where P with every
+/// factor (b t - a) removed has no zero (interval Horner evaluation).
+inline Root_window root_window(const Z1& P, const Algebraic_real& x) {
+  if (!x.is_rational()) return Root_window{x, std::max(x.lower(), Rational(0)), std::min(x.upper(), Rational(1))};
+  const Rational q = x.rational_value();
+  const Z1 lin(Integer(-q.numerator()), Integer(q.denominator()));
+  Z1 C = P;
+  for (int guard = 0; !CGAL::is_zero(C) && C.degree() > 0 && CGAL::is_zero(value_at(C, q)) && guard <= P.degree(); ++guard)
+    C = CGAL::integral_division(C, lin);
+  if (CGAL::is_zero(C) || CGAL::is_zero(value_at(C, q)))
+    throw Error("intersect_curve_patch: window of a rational root (internal error)");
+  for (int e = 4; e <= 4096; e *= 2) {
+    const Rational w = power_of_two_inverse(e);
+    const mpfr_prec_t prec = static_cast<mpfr_prec_t>(2 * e + 2 * bit_size(C) + 64);
+    if (!Interval::horner(C, Interval::hull(q - w, q + w, prec)).contains_zero()) return Root_window{x, q - w, q + w};
+  }
+  throw Error("intersect_curve_patch: window of a rational root (internal error)");
+}
+
+/// Thrown when a grid point is neither excluded nor proved (a singular solution).
+class Singular_fibre_error : public Error {
+ public:
+  explicit Singular_fibre_error(const std::string& what) : Error(what) {}
+};
+
+/// One preimage over a root r_i found by the grid step.
+struct Fibre_point {
+  Algebraic_real u, v;
+  bool simple = true;  ///< false: singular solution (only decided exactly, at rational triples)
+};
+
+/// Decides one grid point (r, u, v) given by windows: 0 excluded, 1 simple solution, 2 singular solution (exact
+/// only); throws Singular_fibre_error when neither decided nor excluded at box radius 2^-256.
+///
+/// Proof: the box B (radius rho about rational centres within rho/4 of r, u, v) contains the grid point, so
+/// 0 not in F_k(B) excludes it. If B lies in the windows, W != 0 on B_r and Phi_0 != 0 on B_u x B_v, then a zero z
+/// of F in B is an intersection C(z_r) = Phi(z_u, z_v), so R(z_r) = U(z_u) = V(z_v) = 0 and by the windows
+/// z = (r, u, v); Krawczyk's K(B) in int B proves that F has exactly one zero in B, a regular one.
+inline int decide_grid_point(const Fibre_system& S, const std::array<Root_window, 3>& w) {
+  if (w[0].x.is_rational() && w[1].x.is_rational() && w[2].x.is_rational())
+    return S.exact(w[0].x.rational_value(), w[1].x.rational_value(), w[2].x.rational_value());
+  for (int e = 8; e <= 256; e *= 2) {
+    const Rational rho = power_of_two_inverse(e);
+    const mpfr_prec_t prec = static_cast<mpfr_prec_t>(2 * e + 3 * S.bits + 128);
+    std::array<Interval, 3> tight{Interval(prec), Interval(prec), Interval(prec)}, box = tight;
+    bool in_windows = true;
+    for (int i = 0; i < 3; ++i) {
+      const Algebraic_real& x = w[i].x;
+      Rational c;
+      if (x.is_rational()) {
+        c = x.rational_value();
+        tight[i] = Interval::hull(c, c, prec);
+      } else {
+        x.refine_to_width(rho / 2);
+        c = (x.lower() + x.upper()) / 2;
+        tight[i] = Interval::hull(x.lower(), x.upper(), prec);
+      }
+      box[i] = Interval::hull(c - rho, c + rho, prec);
+      in_windows = in_windows && w[i].lo < c - rho && c + rho < w[i].hi;
+    }
+    std::array<Interval, 3> F = tight;
+    S.values(tight, F);
+    for (const Interval& f : F)
+      if (!f.contains_zero()) return 0;
+    if (!in_windows || Interval::horner(S.H[0], box[0]).contains_zero() ||
+        value_at(S.P[0], box[1], box[2]).contains_zero())
+      continue;
+    auto value = [&S](const std::array<Interval, 3>& c, std::array<Interval, 3>& out) { S.values(c, out); };
+    auto jac = [&S](const std::array<Interval, 3>& x, std::vector<std::vector<Interval>>& J) { S.jacobian(x, J); };
+    if (krawczyk_prove<3>(box, value, jac)) return 1;
+  }
+  throw Singular_fibre_error("intersect_curve_patch: the curve is tangent to a sheet of the patch or meets a singular "
+                             "point of the surface at r ~ " + w[0].x.to_decimal_string(15) + ", (u, v) ~ (" +
+                             w[1].x.to_decimal_string(15) + ", " + w[2].x.to_decimal_string(15) +
+                             "), where the point has several preimages: not supported");
+}
+
 /// The curve/patch engine.
 class Curve_patch_engine {
  public:
@@ -328,6 +521,7 @@ class Curve_patch_engine {
     // R(r) = det M(C(r)): the implicit equation of the surface along the curve (buse-elkadi-galligo-2008 §2:
     // the determinant of the Bezoutian matrix is the resultant). Degree <= 2 m n deg C.
     const Z1 R = small_polynomial_determinant(M_);
+    R_ = R;
     CS_TICK("det");
     if (CGAL::is_zero(R)) {
       check_implicit_matrix_regular();
@@ -342,17 +536,36 @@ class Curve_patch_engine {
     return res;
   }
 
-  /// All (u,v) in [0,1]^2 with Phi(u,v) = p (rational point), from the kernel of M(1, p).
-  std::vector<std::pair<Rational, Rational>> preimages(const std::array<Rational, 3>& p) const {
+  /// All (u,v) in [0,1]^2 with Phi(u,v) = p (rational point), from the kernel of M(1, p); if the kernel has
+  /// dimension > 1 (several preimages or a singular point), from the grid step along a line through p.
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> preimages(const std::array<Rational, 3>& p) const {
     const Kernel_answer k = analyse_kernel(matrix_->at_point({Rational(1), p[0], p[1], p[2]}));
-    if (k.status == Kernel_answer::degenerate)
-      throw Error("intersect_curve_patch: the point (" + str(p[0]) + ", " + str(p[1]) + ", " + str(p[2]) +
-                  ") has several preimages on the patch or is singular on it (not supported)");
-    std::vector<std::pair<Rational, Rational>> out;
+    if (k.status == Kernel_answer::degenerate) return fibre_of_point(p);
+    std::vector<std::pair<Algebraic_real, Algebraic_real>> out;
     if (k.status == Kernel_answer::affine && in_unit_interval(k.u) && in_unit_interval(k.v)) {
       // the kernel argument gives the unique common root; checked by exact evaluation as well
       if (patch_(k.u, k.v) != p) throw Error("intersect_curve_patch: kernel inversion failed (internal error)");
-      out.push_back({k.u, k.v});
+      out.push_back({Algebraic_real(k.u), Algebraic_real(k.v)});
+    }
+    return out;
+  }
+
+  /// The preimages (u_j, v_k) over the root r of R (the grid step; see Fibre_system, decide_grid_point). Requires
+  /// R_ and the curve form H_; throws Singular_fibre_error for a singular solution with an irrational coordinate.
+  std::vector<Fibre_point> fibre(const Algebraic_real& r) {
+    compute_eliminants();
+    const Fibre_system S(H_, dense_patch_form());
+    std::array<Root_window, 3> w{root_window(R_, r), Root_window{}, Root_window{}};
+    std::vector<Root_window> wv;
+    for (const Isolated_root& y : eliminant_roots_[1]) wv.push_back(root_window(V_, y.root));
+    std::vector<Fibre_point> out;
+    for (const Isolated_root& x : eliminant_roots_[0]) {
+      w[1] = root_window(U_, x.root);
+      for (const Root_window& y : wv) {
+        w[2] = y;
+        const int d = decide_grid_point(S, w);
+        if (d != 0) out.push_back(Fibre_point{w[1].x, w[2].x, d == 1});
+      }
     }
     return out;
   }
@@ -393,10 +606,7 @@ class Curve_patch_engine {
       const Rational q = r.rational_value();
       const auto h = curve_.homogeneous_value(q);
       const Kernel_answer k = analyse_kernel(matrix_->at_point({h[0], h[1], h[2], h[3]}));
-      if (k.status == Kernel_answer::degenerate)
-        throw Error("intersect_curve_patch: at r = " + str(q) +
-                    " the curve meets the surface in a point with several preimages or a singular point "
-                    "(not supported)");
+      if (k.status == Kernel_answer::degenerate) return add_fibre(res, r);  // several preimages or singular
       if (k.status != Kernel_answer::affine || !in_unit_interval(k.u) || !in_unit_interval(k.v)) return;
       if (patch_(k.u, k.v) != curve_(q)) throw Error("intersect_curve_patch: kernel inversion failed (internal error)");
       add_point(res, r, Algebraic_real(k.u), Algebraic_real(k.v), root.multiplicity);
@@ -407,12 +617,55 @@ class Curve_patch_engine {
     compute_minors();
     CS_TICK("minors");
     const int s = r.sign_of(D11_);
-    if (s == 0)
-      throw Error("intersect_curve_patch: at an irrational root r ~ " + r.to_decimal_string(12) +
-                  " the adjugate vanishes (several preimages, singular point or root at infinity: not supported)");
+    if (s == 0) return add_fibre(res, r);  // rank < N-1 (several preimages, singular point) or root at infinity
     Algebraic_real u, v;
     if (!located(r, Du_, s, 0, u) || !located(r, Dv_, s, 1, v)) return;
     add_point(res, r, u, v, root.multiplicity);
+  }
+
+  // Points over r from the grid step: multiplicity 1 for a simple solution of C(r) = Phi(u,v) (the curve crosses
+  // that sheet transversally), 0 and tangent for a singular one (decided exactly at rational triples).
+  void add_fibre(Curve_patch_intersection_result& res, const Algebraic_real& r) {
+    CS_TICK("grid step");
+    for (const Fibre_point& f : fibre(r)) {
+      add_point(res, r, f.u, f.v, f.simple ? 1 : 0);
+      if (!f.simple) {
+        res.points.back().tangent = true;
+        if (res.points.back().kind == Curve_patch_intersection_kind::transversal)
+          res.points.back().kind = Curve_patch_intersection_kind::tangent;
+      }
+    }
+  }
+
+  // Preimages of a rational point p with a degenerate kernel: the fibre over r = 1/2 of the segment
+  // p + (2r - 1) d, whose intersections at r = 1/2 are exactly the preimages of p. A direction d tangent to a
+  // sheet at p gives a singular solution; the next direction is tried.
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> fibre_of_point(const std::array<Rational, 3>& p) const {
+    const int dirs[3][3] = {{1, 2, 3}, {3, -1, 2}, {-2, 5, 1}};
+    std::string last = "the lines through it lie on the surface";
+    for (const auto& d : dirs) {
+      std::array<Rational, 3> a = p, b = p;
+      for (int k = 0; k < 3; ++k) {
+        a[k] -= Rational(d[k]);
+        b[k] += Rational(d[k]);
+      }
+      const Curve segment(std::vector<std::array<Rational, 3>>{a, b});
+      Curve_patch_engine e(segment, patch_);
+      e.H_ = integer_curve_form(segment);
+      e.matrix_ = matrix_;
+      e.M_ = matrix_->at_curve(e.H_);
+      e.R_ = small_polynomial_determinant(e.M_);
+      if (CGAL::is_zero(e.R_)) continue;
+      try {
+        std::vector<std::pair<Algebraic_real, Algebraic_real>> out;
+        for (const Fibre_point& f : e.fibre(Algebraic_real(Rational(1, 2)))) out.push_back({f.u, f.v});
+        return out;
+      } catch (const Singular_fibre_error& err) {
+        last = err.what();
+      }
+    }
+    throw Error("intersect_curve_patch: the preimages of the point (" + str(p[0]) + ", " + str(p[1]) + ", " +
+                str(p[2]) + ") (several preimages or a singular point) could not be decided: " + last);
   }
 
   void compute_minors() {
@@ -458,6 +711,8 @@ class Curve_patch_engine {
       const Z1 U = outer_resultant(g1, g2);
       const Z1 V = outer_resultant(swap_uv(g1), swap_uv(g2));
       if (CGAL::is_zero(U) || CGAL::is_zero(V)) continue;
+      U_ = U;
+      V_ = V;
       eliminant_roots_[0] = separated_roots(U, Rational(0), Rational(1));
       eliminant_roots_[1] = separated_roots(V, Rational(0), Rational(1));
       CS_TICK("eliminants U, V");
@@ -616,9 +871,7 @@ class Curve_patch_engine {
       const bool in_overlap = (i > 0 && covered[i - 1]) || (i + 1 < ub.size() && covered[i]);
       if (in_overlap) continue;
       std::vector<std::pair<Algebraic_real, Algebraic_real>> uv = ub[i].uv;
-      if (uv.empty() && ub[i].r.is_rational())
-        for (const auto& w : preimages(curve_(ub[i].r.rational_value())))
-          uv.push_back({Algebraic_real(w.first), Algebraic_real(w.second)});
+      if (uv.empty() && ub[i].r.is_rational()) uv = preimages(curve_(ub[i].r.rational_value()));
       for (const auto& w : uv) {
         add_point(res, ub[i].r, w.first, w.second, 0);
         res.points.back().tangent = false;
@@ -658,7 +911,9 @@ class Curve_patch_engine {
   std::vector<std::vector<Z1>> M_;
   bool have_minors_ = false;
   Q1 D11_, Du_, Dv_;
+  Z1 R_;  // det M(C(r))
   bool have_eliminants_ = false;
+  Z1 U_, V_;
   std::array<std::vector<Isolated_root>, 2> eliminant_roots_;
 };
 

@@ -1,0 +1,190 @@
+// Curve/patch intersection through points with several preimages (folded patches, double covers) and through
+// singular points of the surface. Expected values come from outside the code: the folded patch
+// Phi = ((s^2 - c)(1 + s/4), v, s (s^2 - c) v), s = 2u - 1, maps s = +-sqrt(c) to the same line (0, v, 0) (a double
+// curve); the double cover ((2u-1)^2, v, (2u-1)^2 v) of z = xy; an umbrella (s v', s (1 + v'^2), v'^2) with a singular
+// point at the origin; and hand-solved intersection equations.
+//
+// Why not the plain fold (s^2 - c, v, s (s^2 - c) v) or the Whitney umbrella (s v', s, v'^2): as polynomial patches
+// on P^1 x P^1 they have a base point at infinity (all four homogeneous coordinates vanish at (u, v) = (oo, 0),
+// resp. (oo, oo)), so their Dixon determinant vanishes identically and the implicit matrix cannot be used (a
+// documented limit of intersect_curve_patch, tested at the end). The factor (1 + s/4) and the term s v'^2 remove the
+// base points without changing the double curve / the singular point.
+#include <bezoutian/Curve_surface_intersection.h>
+
+#include <catch2/catch.hpp>
+
+using namespace bezoutian;
+
+namespace {
+
+using Q = Rational;
+using P3 = std::array<Q, 3>;
+using Q1 = Polynomial_1<Q>;
+using Q2 = Polynomial_2<Q>;
+using Z1 = Polynomial_1<Integer>;
+using Patch = Rational_bezier_patch<Q>;
+
+Q1 lin(const Q& a, const Q& b) { return Q1(a, b); }  // a + b t
+Q2 in_u(const Q1& f) { return Q2(f); }
+Q2 v_times(const Q1& f) { return Q2(Q1(0), f); }
+
+// Phi = ((s^2 - c)(1 + s/4), v, s (s^2 - c) v), s = 2u - 1: Phi(s, v) = Phi(-s, v) on s^2 = c.
+Patch folded(const Q& c) {
+  const Q1 s = lin(-1, 2), a = s * s - Q1(c);
+  return Patch::from_power_form({in_u(Q1(1)), in_u(a * (Q1(1) + s * Q1(Q(1, 4)))), v_times(Q1(1)), v_times(s * a)});
+}
+
+// The plain fold (s^2 - c, v, s (s^2 - c) v): base point at (u, v) = (oo, 0).
+Patch plain_fold(const Q& c) {
+  const Q1 s = lin(-1, 2), a = s * s - Q1(c);
+  return Patch::from_power_form({in_u(Q1(1)), in_u(a), v_times(Q1(1)), v_times(s * a)});
+}
+
+// The same surface as folded(c) with u = t / (2 - t) (a Moebius reparametrization of [0,1]): with D = 2 - t,
+// S = 3t - 2, s = S/D and (Phi0..Phi3) = (D^3, (S^2 - c D^2)(4D + S)/4, v D^3, S (S^2 - c D^2) v): non-unit
+// Bernstein weights D^3 > 0, the same image; s = +-sigma at t = (2 + 2 sigma)/(3 + sigma).
+Patch folded_rational(const Q& c) {
+  const Q1 D = lin(2, -1), S = lin(-2, 3), a = S * S - Q1(c) * D * D, D3 = D * D * D;
+  return Patch::from_power_form(
+      {in_u(D3), in_u(a * (Q1(4) * D + S) * Q1(Q(1, 4))), v_times(D3), v_times(S * a)});
+}
+
+// (s v', s (1 + v'^2), v'^2), s = 2u - 1, v' = 2v - 1: the origin = Phi(1/2, 1/2) has the single preimage s = v' = 0
+// (s v' = s (1 + v'^2) = 0), where Phi_v' = (s, 2 s v', 2 v') = 0: a singular point of the surface (a pinch point).
+Patch umbrella() {
+  const Q1 s = lin(-1, 2);
+  // v' = -1 + 2v: s v' = -s + 2 s v; 1 + v'^2 = 2 - 4v + 4v^2; v'^2 = 1 - 4v + 4v^2
+  return Patch::from_power_form({in_u(Q1(1)), Q2(-s, Q1(2) * s), Q2(Q1(2) * s, Q1(-4) * s, Q1(4) * s),
+                                 Q2(Q1(1), Q1(-4), Q1(4))});
+}
+
+// ((2u-1)^2, v, (2u-1)^2 v): covers its image (a piece of z = xy) twice.
+Patch double_cover() {
+  const Q1 s = lin(-1, 2), s2 = s * s;
+  return Patch::from_power_form({in_u(Q1(1)), in_u(s2), v_times(Q1(1)), v_times(s2)});
+}
+
+Algebraic_real alg(const Z1& f, const Q& lo, const Q& hi) { return Algebraic_real(f, lo, hi); }
+
+bool has(const Curve_patch_intersection_result& res, const Algebraic_real& r, const Algebraic_real& u,
+         const Algebraic_real& v) {
+  for (const auto& p : res.points)
+    if (p.r == r && p.u == u && p.v == v) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("fold, c = 1/4: a segment through the double line has two rational preimages", "[curve_patch][fibres]") {
+  const Patch P = folded(Q(1, 4));
+  const auto res = intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, P);
+  REQUIRE(res.points.size() == 2);
+  REQUIRE(res.overlaps.empty());
+  CHECK(has(res, Q(1, 2), Q(1, 4), Q(1, 2)));
+  CHECK(has(res, Q(1, 2), Q(3, 4), Q(1, 2)));
+  for (const auto& p : res.points) {
+    CHECK(p.multiplicity == 1);  // the segment crosses each sheet transversally
+    CHECK(p.kind == Curve_patch_intersection_kind::transversal);
+    CHECK(!p.tangent);
+    CHECK(P(p.u.rational_value(), p.v.rational_value()) == P3{Q(0), Q(1, 2), Q(0)});
+  }
+}
+
+TEST_CASE("fold, c = 1/2: two irrational preimages u = (1 +- sqrt(1/2))/2", "[curve_patch][fibres]") {
+  const Patch P = folded(Q(1, 2));
+  const auto res = intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, P);
+  REQUIRE(res.points.size() == 2);
+  const Z1 f(Integer(1), Integer(-8), Integer(8));  // (2u - 1)^2 = 1/2
+  CHECK(has(res, Q(1, 2), alg(f, Q(0), Q(1, 2)), Q(1, 2)));
+  CHECK(has(res, Q(1, 2), alg(f, Q(1, 2), Q(1)), Q(1, 2)));
+  for (const auto& p : res.points) {
+    CHECK(p.multiplicity == 1);
+    CHECK(p.kind == Curve_patch_intersection_kind::transversal);
+    const double u = p.u.to_double();
+    CHECK(std::abs(u - (p.u < Algebraic_real(Q(1, 2)) ? (1 - std::sqrt(0.5)) / 2 : (1 + std::sqrt(0.5)) / 2)) < 1e-15);
+  }
+}
+
+TEST_CASE("rational-weight fold: same image, preimages t = 2/5, 6/7", "[curve_patch][fibres]") {
+  const Patch P = folded_rational(Q(1, 4));
+  REQUIRE(P.is_rational());
+  const auto res = intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, P);
+  REQUIRE(res.points.size() == 2);
+  CHECK(has(res, Q(1, 2), Q(2, 5), Q(1, 2)));  // sigma = -1/2
+  CHECK(has(res, Q(1, 2), Q(6, 7), Q(1, 2)));  // sigma = +1/2
+}
+
+TEST_CASE("fold: an oblique segment through the double line at v = 1/3 and one more sheet", "[curve_patch][fibres]") {
+  // C(r) = (2r - 1, 2r/3, (1 - 2r)/2): z = -x/2, y = (x + 1)/3. On the patch s (s^2 - c) y = -(s^2 - c)(1 + s/4)/2:
+  // s^2 = 1/4 (x = 0, r = 1/2, v = 1/3) or s y = -(1 + s/4)/2 with y = (x + 1)/3, x = (s^2 - 1/4)(1 + s/4), i.e.
+  // 4 s^4 + 16 s^3 - s^2 + 18 s + 24 = 0: one root s ~ -0.87 in [-1, 1] (r ~ 0.70, v ~ 0.47).
+  const Patch P = folded(Q(1, 4));
+  const auto res = intersect_segment_patch({Q(-1), Q(0), Q(1, 2)}, {Q(1), Q(2, 3), Q(-1, 2)}, P);
+  REQUIRE(res.points.size() == 3);
+  CHECK(has(res, Q(1, 2), Q(1, 4), Q(1, 3)));
+  CHECK(has(res, Q(1, 2), Q(3, 4), Q(1, 3)));
+  // the third: u = (1 + s)/2, s in (-0.9, -0.8)
+  const Z1 s(Integer(-1), Integer(2));
+  const Algebraic_real u3 = alg(Z1(4) * s * s * s * s + Z1(16) * s * s * s - s * s + Z1(18) * s + Z1(24), Q(1, 20), Q(1, 10));
+  int found = 0;
+  for (const auto& p : res.points)
+    if (p.u == u3) {
+      ++found;
+      CHECK(p.multiplicity == 1);
+      CHECK(p.kind == Curve_patch_intersection_kind::transversal);
+      // y = v = 2r/3 and x = s^2 - 1/4 = 2r - 1 (independent relations)
+      const double r = p.r.to_double(), v = p.v.to_double(), sd = 2 * u3.to_double() - 1;
+      CHECK(std::abs(v - 2 * r / 3) < 1e-14);
+      CHECK(std::abs((sd * sd - 0.25) * (1 + sd / 4) - (2 * r - 1)) < 1e-14);
+    }
+  CHECK(found == 1);
+}
+
+TEST_CASE("double cover of z = xy: every hit is reported with both preimages", "[curve_patch][fibres]") {
+  const Patch P = double_cover();
+  // vertical segment x = 1/4, y = 1/2: z = 1/8 at r = 1/2; s = +-1/2
+  auto res = intersect_segment_patch({Q(1, 4), Q(1, 2), Q(0)}, {Q(1, 4), Q(1, 2), Q(1, 4)}, P);
+  REQUIRE(res.points.size() == 2);
+  CHECK(has(res, Q(1, 2), Q(1, 4), Q(1, 2)));
+  CHECK(has(res, Q(1, 2), Q(3, 4), Q(1, 2)));
+  // x = 1/2, y = 1/3, z from 0 to 1/3: z = 1/6 at r = 1/2; s^2 = 1/2
+  res = intersect_segment_patch({Q(1, 2), Q(1, 3), Q(0)}, {Q(1, 2), Q(1, 3), Q(1, 3)}, P);
+  REQUIRE(res.points.size() == 2);
+  const Z1 f(Integer(1), Integer(-8), Integer(8));
+  CHECK(has(res, Q(1, 2), alg(f, Q(0), Q(1, 2)), Q(1, 3)));
+  CHECK(has(res, Q(1, 2), alg(f, Q(1, 2), Q(1)), Q(1, 3)));
+  for (const auto& p : res.points) CHECK(p.multiplicity == 1);
+}
+
+TEST_CASE("constant curve on the double line of the fold", "[curve_patch][fibres]") {
+  for (const Q& c : {Q(1, 4), Q(1, 2)}) {
+    const Patch P = folded(c);
+    const Rational_bezier_curve_3<Q> on({P3{Q(0), Q(2, 5), Q(0)}, P3{Q(0), Q(2, 5), Q(0)}});
+    auto res = intersect_curve_patch(on, P);
+    CHECK(res.points.empty());
+    REQUIRE(res.overlaps.size() == 1);
+    CHECK(res.overlaps[0].r0 == Algebraic_real(0));
+    CHECK(res.overlaps[0].r1 == Algebraic_real(1));
+    const Rational_bezier_curve_3<Q> off({P3{Q(0), Q(2, 5), Q(1, 10)}, P3{Q(0), Q(2, 5), Q(1, 10)}});
+    res = intersect_curve_patch(off, P);
+    CHECK(res.points.empty());
+    CHECK(res.overlaps.empty());
+  }
+}
+
+TEST_CASE("Whitney umbrella: a segment through the pinch point", "[curve_patch][fibres]") {
+  const Patch P = umbrella();
+  REQUIRE(P(Q(1, 2), Q(1, 2)) == P3{Q(0), Q(0), Q(0)});
+  // x = y = z = 2r - 1: s v' = s (1 + v'^2) forces s = 0 (v' = 1 + v'^2 has no real root), then v' = 0: only the
+  // singular point, at r = 1/2
+  const auto res = intersect_segment_patch({Q(-1), Q(-1), Q(-1)}, {Q(1), Q(1), Q(1)}, P);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, Q(1, 2), Q(1, 2), Q(1, 2)));
+  CHECK(res.points[0].tangent);  // the Jacobian [C' | Phi_u | Phi_v] is singular there (decided exactly)
+  CHECK(res.points[0].multiplicity == 0);
+  CHECK(res.points[0].kind == Curve_patch_intersection_kind::tangent);
+}
+
+TEST_CASE("a patch with a base point at infinity is a clear Error", "[curve_patch][fibres]") {
+  CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, plain_fold(Q(1, 4))), Error);
+}
