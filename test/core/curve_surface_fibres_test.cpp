@@ -188,3 +188,108 @@ TEST_CASE("Whitney umbrella: a segment through the pinch point", "[curve_patch][
 TEST_CASE("a patch with a base point at infinity is a clear Error", "[curve_patch][fibres]") {
   CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, plain_fold(Q(1, 4))), Error);
 }
+
+namespace {
+Rational_bezier_curve_3<Q> quadratic_through_double_line(const P3& dir) {
+  // C(r) = (0, 1/2, 0) + (r^2 - 1/2) dir: Bernstein coefficients of r^2 - 1/2 are (-1/2, -1/2, 1/2); the curve runs
+  // along the line through (0, 1/2, 0) and reaches it at the irrational r = 1/sqrt(2).
+  std::vector<P3> pts;
+  for (const Q& b : {Q(-1, 2), Q(-1, 2), Q(1, 2)}) pts.push_back({b * dir[0], Q(1, 2) + b * dir[1], b * dir[2]});
+  return Rational_bezier_curve_3<Q>(pts);
+}
+}  // namespace
+
+TEST_CASE("fold: a curve through the double line at the irrational r = 1/sqrt(2)", "[curve_patch][fibres]") {
+  // direction (1, 0, -1): on the patch z = -x with v = 1/2 forces x = 0 (1 + s/4 = -s/2 gives s = -4/3), so only
+  // r = 1/sqrt(2) with u = 1/4, 3/4 (c = 1/4).
+  const auto res = intersect_curve_patch(quadratic_through_double_line({Q(1), Q(0), Q(-1)}), folded(Q(1, 4)));
+  REQUIRE(res.points.size() == 2);
+  const Algebraic_real r = alg(Z1(Integer(-1), Integer(0), Integer(2)), Q(0), Q(1));
+  CHECK(has(res, r, Q(1, 4), Q(1, 2)));
+  CHECK(has(res, r, Q(3, 4), Q(1, 2)));
+  for (const auto& p : res.points) CHECK(p.multiplicity == 1);
+}
+
+TEST_CASE("fold: a segment tangent to one sheet on the double line", "[curve_patch][fibres]") {
+  // Sheet s = 1/2 (c = 1/4, v = 1/2) at (0, 1/2, 0): Phi_s = (2s (1 + s/4) + (s^2 - c)/4, 0, (3 s^2 - c) v)
+  // = (9/8, 0, 1/4) and Phi_v = (0, 1, 0): the direction (9, 3, 2) lies in its tangent plane; the sheet s = -1/2 has
+  // Phi_s = (-7/8, 0, 1/4), which with Phi_v and (9, 3, 2) is independent: transversal.
+  const P3 d{Q(9, 10), Q(3, 10), Q(2, 10)};
+  const auto res = intersect_segment_patch({-d[0], Q(1, 2) - d[1], -d[2]}, {d[0], Q(1, 2) + d[1], d[2]}, folded(Q(1, 4)));
+  int at_half = 0;
+  for (const auto& p : res.points) {
+    if (p.r != Algebraic_real(Q(1, 2))) continue;
+    ++at_half;
+    REQUIRE(p.v == Algebraic_real(Q(1, 2)));
+    if (p.u == Algebraic_real(Q(3, 4))) {  // s = 1/2: tangent, decided exactly
+      CHECK(p.tangent);
+      CHECK(p.multiplicity == 0);
+      CHECK(p.kind == Curve_patch_intersection_kind::tangent);
+    } else {
+      CHECK(p.u == Algebraic_real(Q(1, 4)));
+      CHECK(!p.tangent);
+      CHECK(p.multiplicity == 1);
+    }
+  }
+  CHECK(at_half == 2);
+  // the same line run through at r = 1/sqrt(2): the tangent preimage has an irrational r, so it can be neither
+  // proved nor excluded by intervals: a clear Error naming the point, never a guess
+  try {
+    intersect_curve_patch(quadratic_through_double_line({Q(9), Q(3), Q(2)}), folded(Q(1, 4)));
+    FAIL("expected an Error");
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    CHECK(m.find("tangent to a sheet") != std::string::npos);
+    CHECK(m.find("0.707106781186548") != std::string::npos);  // r
+    CHECK(m.find("0.750000000000000") != std::string::npos);  // u
+  }
+}
+
+TEST_CASE("fold: random segments through the double line", "[curve_patch][fibres]") {
+  // through (0, v0, 0) with direction (a, b, d): both preimages u = (1 +- sqrt(c))/2, v = v0 at r = 1/2; every
+  // reported triple satisfies C(r) = Phi(u,v) (1e-20 after refinement)
+  const Q cs[] = {Q(1, 4), Q(1, 9), Q(1, 2), Q(2, 3)};
+  const Q vs[] = {Q(1, 3), Q(3, 5), Q(5, 7)};
+  const int dirs[][3] = {{1, 0, -1}, {2, 1, 3}, {-3, 1, 1}};
+  for (const Q& c : cs)
+    for (const Q& v0 : vs)
+      for (const auto& d : dirs) {
+        const Patch P = folded(c);
+        const P3 a{Q(-d[0], 2), v0 - Q(d[1], 2), Q(-d[2], 2)}, b{Q(d[0], 2), v0 + Q(d[1], 2), Q(d[2], 2)};
+        const auto res = intersect_segment_patch(a, b, P);
+        // u = (1 +- sqrt(c))/2: roots of (2u - 1)^2 = c, i.e. 4 u^2 - 4 u + 1 - c (times the denominator of c)
+        const Integer cd = c.denominator(), cn = c.numerator();
+        const Z1 f(Integer(cd - cn), Integer(-4 * cd), Integer(4 * cd));
+        CHECK(has(res, Q(1, 2), alg(f, Q(0), Q(1, 2)), v0));
+        CHECK(has(res, Q(1, 2), alg(f, Q(1, 2), Q(1)), v0));
+        const Q tiny = Q(1) / Q(Integer("100000000000000000000000000000000000000000")), eps = CGAL::ipower(Q(1, 100000), 4);
+        for (const auto& p : res.points) {
+          p.r.refine_to_width(tiny);
+          p.u.refine_to_width(tiny);
+          p.v.refine_to_width(tiny);
+          const Q r = p.r.lower(), u = p.u.lower(), v = p.v.lower();
+          P3 C;
+          for (int k = 0; k < 3; ++k) C[k] = a[k] + r * (b[k] - a[k]);
+          const P3 S = P(u, v);
+          for (int k = 0; k < 3; ++k) CHECK(CGAL::abs(C[k] - S[k]) < eps);
+        }
+      }
+}
+
+TEST_CASE("collapsed edge: a clear Error (the patch has base points)", "[curve_patch][fibres]") {
+  // (u, u v, u v^2): the edge u = 0 collapses to the origin; as a polynomial patch of bi-degree (1,2) it has the base
+  // point (u, v) = (0, oo), so the implicit matrix is singular: Error, not a wrong answer.
+  const Patch P = Patch::from_power_form({in_u(Q1(1)), in_u(lin(0, 1)), v_times(lin(0, 1)), Q2(Q1(0), Q1(0), lin(0, 1))});
+  CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P), Error);
+}
+
+TEST_CASE("fold: a segment running along the double line", "[curve_patch][fibres]") {
+  // (0, 2r - 1/2, 0) lies on the double line (0, v, 0) for all r, covered (twice) for v = 2r - 1/2 in [0,1]
+  for (const Q& c : {Q(1, 4), Q(1, 2)}) {
+    const auto res = intersect_segment_patch({Q(0), Q(-1, 2), Q(0)}, {Q(0), Q(3, 2), Q(0)}, folded(c));
+    CHECK(res.points.empty());
+    REQUIRE(res.overlaps.size() == 1);
+    CHECK(res.overlaps[0].r0 == Algebraic_real(Q(1, 4)));
+    CHECK(res.overlaps[0].r1 == Algebraic_real(Q(3, 4)));
+  }
+}
