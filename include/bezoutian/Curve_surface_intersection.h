@@ -73,9 +73,15 @@ struct Curve_patch_intersection_point {
   /// Multiplicity of r as a root of the eliminant R(r) = det M(C(r)) (the intersection multiplicity of the
   /// curve with the implicit surface when the patch parametrizes it once); 0 for touching points found while
   /// the curve lies on the implicit surface (no eliminant).
+  /// For a point C(r) with several preimages or singular on the surface (found by the grid step, see
+  /// doc/curve_surface_intersection.md), one entry per preimage (u,v) with multiplicity 1 if (r,u,v) is a simple
+  /// solution of C(r) = Phi(u,v) (the curve crosses that sheet transversally; proved), or 0 with tangent = true if
+  /// it is a singular one (the curve is tangent to that sheet or the point is singular on the surface; decided
+  /// exactly, only possible when r, u, v are rational, otherwise Error).
   int multiplicity = 1;
   Curve_patch_intersection_kind kind = Curve_patch_intersection_kind::transversal;
-  /// multiplicity >= 2: the curve is tangent to the surface (or the point is singular on it).
+  /// multiplicity >= 2, or a singular solution found by the grid step: the curve is tangent to the surface (or
+  /// the point is singular on it).
   bool tangent = false;
   /// Floating-point approximation of the common point (C evaluated at the double nearest to r).
   std::array<double, 3> point{};
@@ -388,24 +394,40 @@ struct Fibre_system {
     }
   }
 
-  /// Exact test at a rational triple: 0 not a solution, 1 simple solution, 2 singular solution. The affine
+  /// Exact decision at a grid point with at most one irrational coordinate (index `free`, -1 for none; the others
+  /// rational in `value`): with the irrational coordinate as the variable t, F_1..F_3 and the determinant of the
+  /// Jacobian are univariate polynomials over Q, whose signs at the algebraic number are exact
+  /// (Algebraic_real::sign_of). Returns 0 not a solution, 1 simple solution, 2 singular solution. The affine
   /// Jacobian [C'(r) | -Phi_u | -Phi_v] has the columns (X_k' W - X_k W')/W^2, (Phi_k,u Phi_0 - Phi_k Phi_0,u)/Phi_0^2,
-  /// ...; positive column factors do not change its rank.
-  int exact(const Rational& r, const Rational& u, const Rational& v) const {
-    const Rational w = value_at(H[0], r), p0 = value_at(P[0], u, v);
-    for (int k = 1; k <= 3; ++k)
-      if (w * value_at(P[k], u, v) != value_at(H[k], r) * p0) return 0;
-    const Rational dw = value_at(dH[0], r), p0u = value_at(Pu[0], u, v), p0v = value_at(Pv[0], u, v);
-    Rational a[3][3];
+  /// (Phi_k,v Phi_0 - Phi_k Phi_0,v)/Phi_0^2; nonzero column factors do not change its rank.
+  int exact(int free, const std::array<Rational, 3>& value, const Algebraic_real& x) const {
+    auto curve = [&](const Z1& f) { return free == 0 ? to_q(f) : Q1(value_at(f, value[0])); };
+    auto patch = [&](const Z2& f) {
+      if (free == 1) {  // polynomial in u at v = value[2]
+        Q1 g(0), vp(1);
+        for (int j = 0; j <= f.degree(); ++j, vp *= Q1(value[2])) g += to_q(f[j]) * vp;
+        return g;
+      }
+      if (free == 2) {  // polynomial in v at u = value[1]
+        std::vector<Rational> c;
+        for (int j = 0; j <= f.degree(); ++j) c.push_back(value_at(f[j], value[1]));
+        return Q1(c.begin(), c.end());
+      }
+      return Q1(value_at(f, value[1], value[2]));
+    };
+    auto sign = [&](const Q1& f) { return free < 0 ? CGAL::sign(f[0]) : CGAL::Sign(x.sign_of(f)); };
+    const Q1 w = curve(H[0]), dw = curve(dH[0]), p0 = patch(P[0]), p0u = patch(Pu[0]), p0v = patch(Pv[0]);
+    Q1 a[3][3];
     for (int k = 1; k <= 3; ++k) {
-      a[k - 1][0] = value_at(dH[k], r) * w - value_at(H[k], r) * dw;
-      a[k - 1][1] = value_at(Pu[k], u, v) * p0 - value_at(P[k], u, v) * p0u;
-      a[k - 1][2] = value_at(Pv[k], u, v) * p0 - value_at(P[k], u, v) * p0v;
+      const Q1 xk = curve(H[k]), pk = patch(P[k]);
+      if (sign(w * pk - xk * p0) != CGAL::ZERO) return 0;
+      a[k - 1][0] = curve(dH[k]) * w - xk * dw;
+      a[k - 1][1] = patch(Pu[k]) * p0 - pk * p0u;
+      a[k - 1][2] = patch(Pv[k]) * p0 - pk * p0v;
     }
-    const Rational det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                         a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    return CGAL::is_zero(det) ? 2 : 1;
+    const Q1 det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                   a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    return sign(det) == CGAL::ZERO ? 2 : 1;
   }
 };
 
@@ -448,15 +470,23 @@ struct Fibre_point {
 };
 
 /// Decides one grid point (r, u, v) given by windows: 0 excluded, 1 simple solution, 2 singular solution (exact
-/// only); throws Singular_fibre_error when neither decided nor excluded at box radius 2^-256.
+/// only, when at most one coordinate is irrational); otherwise throws Singular_fibre_error when neither decided nor
+/// excluded at box radius 2^-256.
 ///
 /// Proof: the box B (radius rho about rational centres within rho/4 of r, u, v) contains the grid point, so
 /// 0 not in F_k(B) excludes it. If B lies in the windows, W != 0 on B_r and Phi_0 != 0 on B_u x B_v, then a zero z
 /// of F in B is an intersection C(z_r) = Phi(z_u, z_v), so R(z_r) = U(z_u) = V(z_v) = 0 and by the windows
 /// z = (r, u, v); Krawczyk's K(B) in int B proves that F has exactly one zero in B, a regular one.
 inline int decide_grid_point(const Fibre_system& S, const std::array<Root_window, 3>& w) {
-  if (w[0].x.is_rational() && w[1].x.is_rational() && w[2].x.is_rational())
-    return S.exact(w[0].x.rational_value(), w[1].x.rational_value(), w[2].x.rational_value());
+  int free = -1, irrational = 0;
+  std::array<Rational, 3> value;
+  for (int i = 0; i < 3; ++i) {
+    if (w[i].x.is_rational())
+      value[i] = w[i].x.rational_value();
+    else
+      free = i, ++irrational;
+  }
+  if (irrational <= 1) return S.exact(free, value, free < 0 ? w[0].x : w[free].x);
   for (int e = 8; e <= 256; e *= 2) {
     const Rational rho = power_of_two_inverse(e);
     const mpfr_prec_t prec = static_cast<mpfr_prec_t>(2 * e + 3 * S.bits + 128);
@@ -490,7 +520,8 @@ inline int decide_grid_point(const Fibre_system& S, const std::array<Root_window
   throw Singular_fibre_error("intersect_curve_patch: the curve is tangent to a sheet of the patch or meets a singular "
                              "point of the surface at r ~ " + w[0].x.to_decimal_string(15) + ", (u, v) ~ (" +
                              w[1].x.to_decimal_string(15) + ", " + w[2].x.to_decimal_string(15) +
-                             "), where the point has several preimages: not supported");
+                             ") (a singular solution of C(r) = Phi(u,v), neither proved nor excluded at box radius "
+                             "2^-256): not supported");
 }
 
 /// The curve/patch engine.
@@ -927,11 +958,16 @@ class Curve_patch_engine {
 /// Method: with M(w,x,y,z) the 2mn x 2mn implicit (Dixon / generalized Bezoutian) matrix of the patch, the roots of
 /// R(r) = det M(C(r)) in [0,1] contain every intersection parameter; at each root the kernel of M gives (u,v)
 /// exactly (rational roots: exact linear algebra; irrational roots: u = Du/D11, v = Dv/D11 from three cofactors).
+/// Where the kernel does not give a unique preimage (the curve crosses a self-intersection curve of the patch, a
+/// patch covering its image several times, or a singular point of the surface), the grid step reports every
+/// preimage (u,v) in [0,1]^2: the candidates are the roots of the eliminants U(u), V(v), each excluded by interval
+/// arithmetic or proved by a Krawczyk test in (r,u,v) (exact decision when r, u, v are rational).
 /// Requirements: no pole of the curve on [0,1] or of the patch on [0,1]^2 (Invalid_input), bi-degree >= (1,1)
-/// (Invalid_input). Error (not supported) when the curve passes through a point with several preimages in the
-/// patch parameters (a self-intersection or singular point of the surface), when the patch has base points, or
-/// when the curve lies on the surface along its singular curve. A constant curve gives the overlap [0,1] if its
-/// point is on the patch, nothing otherwise.
+/// (Invalid_input). Error (not supported) when such a preimage is a singular solution with an irrational
+/// coordinate (the curve tangent to one sheet of a self-intersection, or a singular point of the surface, at an
+/// irrational parameter), when the patch has base points (this includes collapsed edges, e.g. (u, uv, uv^2)), or
+/// when no projection gives nonzero eliminants U, V. A constant curve gives the overlap [0,1] if its point is on
+/// the patch, nothing otherwise.
 inline Curve_patch_intersection_result intersect_curve_patch(const Rational_bezier_curve<Rational, 3>& curve,
                                                               const Rational_bezier_patch<Rational>& patch) {
   return internal::cs::Curve_patch_engine(curve, patch).run();

@@ -232,16 +232,35 @@ TEST_CASE("fold: a segment tangent to one sheet on the double line", "[curve_pat
     }
   }
   CHECK(at_half == 2);
-  // the same line run through at r = 1/sqrt(2): the tangent preimage has an irrational r, so it can be neither
-  // proved nor excluded by intervals: a clear Error naming the point, never a guess
+  // the same line run through at r = 1/sqrt(2): one irrational coordinate, still decided exactly
+  const auto res2 = intersect_curve_patch(quadratic_through_double_line({Q(9), Q(3), Q(2)}), folded(Q(1, 4)));
+  const Algebraic_real r0 = alg(Z1(Integer(-1), Integer(0), Integer(2)), Q(0), Q(1));
+  int at_r0 = 0;
+  for (const auto& p : res2.points) {
+    if (p.r != r0) continue;
+    ++at_r0;
+    CHECK(p.v == Algebraic_real(Q(1, 2)));
+    CHECK(p.tangent == (p.u == Algebraic_real(Q(3, 4))));
+    CHECK(p.multiplicity == (p.tangent ? 0 : 1));
+  }
+  CHECK(at_r0 == 2);
+}
+
+TEST_CASE("fold, c = 1/2: a curve tangent to a sheet at irrational r and u is a clear Error", "[curve_patch][fibres]") {
+  // C(r) = ((2r^2 - 1)(4r + 1/2), 1/2, 2r^2 - 1) reaches the double line at r0 = 1/sqrt(2) with C'(r0) parallel to
+  // (2 sqrt(2) + 1/2, 0, 1), and the sheet s = sqrt(1/2) (u = (1 + sqrt(1/2))/2, v = 1/2) has
+  // Phi_s = (2s + c/2, 0, 2 c v) = (sqrt(2) + 1/4, 0, 1/2): tangent. Two irrational coordinates: intervals can neither
+  // prove nor exclude the singular solution, so Error naming the point, never a guess.
+  const Q1 t = lin(0, 1), a = Q1(2) * t * t - Q1(1);
+  const auto C = Rational_bezier_curve_3<Q>::from_power_form({Q1(1), a * lin(Q(1, 2), 4), Q1(Q(1, 2)), a});
   try {
-    intersect_curve_patch(quadratic_through_double_line({Q(9), Q(3), Q(2)}), folded(Q(1, 4)));
+    intersect_curve_patch(C, folded(Q(1, 2)));
     FAIL("expected an Error");
   } catch (const Error& e) {
     const std::string m = e.what();
     CHECK(m.find("tangent to a sheet") != std::string::npos);
-    CHECK(m.find("0.707106781186548") != std::string::npos);  // r
-    CHECK(m.find("0.750000000000000") != std::string::npos);  // u
+    CHECK(m.find("0.707106781186548") != std::string::npos);  // r0
+    CHECK(m.find("0.853553390593274") != std::string::npos);  // u = (1 + sqrt(1/2))/2
   }
 }
 
