@@ -77,7 +77,7 @@ struct Curve_patch_intersection_point {
   /// doc/curve_surface_intersection.md), one entry per preimage (u,v) with multiplicity 1 if (r,u,v) is a simple
   /// solution of C(r) = Phi(u,v) (the curve crosses that sheet transversally; proved), or 0 with tangent = true if
   /// it is a singular one (the curve is tangent to that sheet or the point is singular on the surface; decided
-  /// exactly, only possible when r, u, v are rational, otherwise Error).
+  /// exactly, only possible when at most one of r, u, v is irrational, otherwise Error).
   int multiplicity = 1;
   Curve_patch_intersection_kind kind = Curve_patch_intersection_kind::transversal;
   /// multiplicity >= 2, or a singular solution found by the grid step: the curve is tangent to the surface (or
@@ -311,7 +311,8 @@ inline std::vector<Isolated_root> separated_roots(const Z1& f, const Rational& a
 // At a root r_i of R where the kernel of M(C(r_i)) does not give a unique preimage, every intersection
 // (r_i, u, v) has u a root of U and v a root of V (compute_eliminants), so the intersections over r_i are among
 // the grid points (r_i, u_j, v_k). Each grid point is excluded by interval evaluation of
-// F_k(r,u,v) = W(r) Phi_k(u,v) - X_k(r) Phi_0(u,v), proved by Krawczyk's test, or decided exactly (rational).
+// F_k(r,u,v) = W(r) Phi_k(u,v) - X_k(r) Phi_0(u,v), proved by Krawczyk's test, or decided exactly (at most one
+// irrational coordinate). Proofs: doc/curve_surface_intersection.md, step 4b.
 
 using Interval = Mpfi_interval;
 
@@ -425,7 +426,8 @@ struct Fibre_system {
       a[k - 1][1] = patch(Pu[k]) * p0 - pk * p0u;
       a[k - 1][2] = patch(Pv[k]) * p0 - pk * p0v;
     }
-    const Q1 det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+    const Q1 det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                   a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
                    a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
     return sign(det) == CGAL::ZERO ? 2 : 1;
   }
@@ -445,8 +447,8 @@ inline Root_window root_window(const Z1& P, const Algebraic_real& x) {
   const Rational q = x.rational_value();
   const Z1 lin(Integer(-q.numerator()), Integer(q.denominator()));
   Z1 C = P;
-  for (int guard = 0; !CGAL::is_zero(C) && C.degree() > 0 && CGAL::is_zero(value_at(C, q)) && guard <= P.degree(); ++guard)
-    C = CGAL::integral_division(C, lin);
+  for (int guard = 0; C.degree() > 0 && CGAL::is_zero(value_at(C, q)) && guard <= P.degree(); ++guard)
+    C = CGAL::integral_division(C, lin);  // exact: (b t - a) is primitive (Gauss's lemma)
   if (CGAL::is_zero(C) || CGAL::is_zero(value_at(C, q)))
     throw Error("intersect_curve_patch: window of a rational root (internal error)");
   for (int e = 4; e <= 4096; e *= 2) {
@@ -466,7 +468,7 @@ class Singular_fibre_error : public Error {
 /// One preimage over a root r_i found by the grid step.
 struct Fibre_point {
   Algebraic_real u, v;
-  bool simple = true;  ///< false: singular solution (only decided exactly, at rational triples)
+  bool simple = true;  ///< false: singular solution (decided exactly; at most one irrational coordinate)
 };
 
 /// Decides one grid point (r, u, v) given by windows: 0 excluded, 1 simple solution, 2 singular solution (exact
@@ -655,7 +657,7 @@ class Curve_patch_engine {
   }
 
   // Points over r from the grid step: multiplicity 1 for a simple solution of C(r) = Phi(u,v) (the curve crosses
-  // that sheet transversally), 0 and tangent for a singular one (decided exactly at rational triples).
+  // that sheet transversally), 0 and tangent for a singular one (decided exactly, at most one irrational coordinate).
   void add_fibre(Curve_patch_intersection_result& res, const Algebraic_real& r) {
     CS_TICK("grid step");
     for (const Fibre_point& f : fibre(r)) {

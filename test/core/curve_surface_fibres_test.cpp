@@ -45,8 +45,7 @@ Patch plain_fold(const Q& c) {
 // Bernstein weights D^3 > 0, the same image; s = +-sigma at t = (2 + 2 sigma)/(3 + sigma).
 Patch folded_rational(const Q& c) {
   const Q1 D = lin(2, -1), S = lin(-2, 3), a = S * S - Q1(c) * D * D, D3 = D * D * D;
-  return Patch::from_power_form(
-      {in_u(D3), in_u(a * (Q1(4) * D + S) * Q1(Q(1, 4))), v_times(D3), v_times(S * a)});
+  return Patch::from_power_form({in_u(D3), in_u(a * (Q1(4) * D + S) * Q1(Q(1, 4))), v_times(D3), v_times(S * a)});
 }
 
 // (s v', s (1 + v'^2), v'^2), s = 2u - 1, v' = 2v - 1: the origin = Phi(1/2, 1/2) has the single preimage s = v' = 0
@@ -54,8 +53,8 @@ Patch folded_rational(const Q& c) {
 Patch umbrella() {
   const Q1 s = lin(-1, 2);
   // v' = -1 + 2v: s v' = -s + 2 s v; 1 + v'^2 = 2 - 4v + 4v^2; v'^2 = 1 - 4v + 4v^2
-  return Patch::from_power_form({in_u(Q1(1)), Q2(-s, Q1(2) * s), Q2(Q1(2) * s, Q1(-4) * s, Q1(4) * s),
-                                 Q2(Q1(1), Q1(-4), Q1(4))});
+  return Patch::from_power_form(
+      {in_u(Q1(1)), Q2(-s, Q1(2) * s), Q2(Q1(2) * s, Q1(-4) * s, Q1(4) * s), Q2(Q1(1), Q1(-4), Q1(4))});
 }
 
 // ((2u-1)^2, v, (2u-1)^2 v): covers its image (a piece of z = xy) twice.
@@ -125,7 +124,8 @@ TEST_CASE("fold: an oblique segment through the double line at v = 1/3 and one m
   CHECK(has(res, Q(1, 2), Q(3, 4), Q(1, 3)));
   // the third: u = (1 + s)/2, s in (-0.9, -0.8)
   const Z1 s(Integer(-1), Integer(2));
-  const Algebraic_real u3 = alg(Z1(4) * s * s * s * s + Z1(16) * s * s * s - s * s + Z1(18) * s + Z1(24), Q(1, 20), Q(1, 10));
+  const Algebraic_real u3 =
+      alg(Z1(4) * s * s * s * s + Z1(16) * s * s * s - s * s + Z1(18) * s + Z1(24), Q(1, 20), Q(1, 10));
   int found = 0;
   for (const auto& p : res.points)
     if (p.u == u3) {
@@ -215,7 +215,8 @@ TEST_CASE("fold: a segment tangent to one sheet on the double line", "[curve_pat
   // = (9/8, 0, 1/4) and Phi_v = (0, 1, 0): the direction (9, 3, 2) lies in its tangent plane; the sheet s = -1/2 has
   // Phi_s = (-7/8, 0, 1/4), which with Phi_v and (9, 3, 2) is independent: transversal.
   const P3 d{Q(9, 10), Q(3, 10), Q(2, 10)};
-  const auto res = intersect_segment_patch({-d[0], Q(1, 2) - d[1], -d[2]}, {d[0], Q(1, 2) + d[1], d[2]}, folded(Q(1, 4)));
+  const auto res =
+      intersect_segment_patch({-d[0], Q(1, 2) - d[1], -d[2]}, {d[0], Q(1, 2) + d[1], d[2]}, folded(Q(1, 4)));
   int at_half = 0;
   for (const auto& p : res.points) {
     if (p.r != Algebraic_real(Q(1, 2))) continue;
@@ -281,7 +282,8 @@ TEST_CASE("fold: random segments through the double line", "[curve_patch][fibres
         const Z1 f(Integer(cd - cn), Integer(-4 * cd), Integer(4 * cd));
         CHECK(has(res, Q(1, 2), alg(f, Q(0), Q(1, 2)), v0));
         CHECK(has(res, Q(1, 2), alg(f, Q(1, 2), Q(1)), v0));
-        const Q tiny = Q(1) / Q(Integer("100000000000000000000000000000000000000000")), eps = CGAL::ipower(Q(1, 100000), 4);
+        const Q tiny = Q(1) / Q(Integer("100000000000000000000000000000000000000000")),
+                eps = CGAL::ipower(Q(1, 100000), 4);
         for (const auto& p : res.points) {
           p.r.refine_to_width(tiny);
           p.u.refine_to_width(tiny);
@@ -298,7 +300,8 @@ TEST_CASE("fold: random segments through the double line", "[curve_patch][fibres
 TEST_CASE("collapsed edge: a clear Error (the patch has base points)", "[curve_patch][fibres]") {
   // (u, u v, u v^2): the edge u = 0 collapses to the origin; as a polynomial patch of bi-degree (1,2) it has the base
   // point (u, v) = (0, oo), so the implicit matrix is singular: Error, not a wrong answer.
-  const Patch P = Patch::from_power_form({in_u(Q1(1)), in_u(lin(0, 1)), v_times(lin(0, 1)), Q2(Q1(0), Q1(0), lin(0, 1))});
+  const Patch P =
+      Patch::from_power_form({in_u(Q1(1)), in_u(lin(0, 1)), v_times(lin(0, 1)), Q2(Q1(0), Q1(0), lin(0, 1))});
   CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P), Error);
 }
 
