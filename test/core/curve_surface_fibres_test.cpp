@@ -315,3 +315,24 @@ TEST_CASE("fold: a segment running along the double line", "[curve_patch][fibres
     CHECK(res.overlaps[0].r1 == Algebraic_real(Q(3, 4)));
   }
 }
+
+TEST_CASE("fold, c = 1/2: r, u and v all irrational on the double line (Krawczyk proof)", "[curve_patch][fibres]") {
+  // C(r) = (2r^2 - 1, r, 1 - 2r^2) meets the double line (0, v, 0) at r0 = 1/sqrt(2), v = r0, with the preimages
+  // u = (1 +- sqrt(1/2))/2; C'(r0) = (2 sqrt(2), 1, -2 sqrt(2)) is transversal to both sheets
+  // (Phi_s = (+-sqrt(2) + 1/4, 0, 2 c v), Phi_v = (0, 1, 0)).
+  const Q1 t = lin(0, 1), a = Q1(2) * t * t - Q1(1);
+  const auto C = Rational_bezier_curve_3<Q>::from_power_form({Q1(1), a, t, -a});
+  const auto res = intersect_curve_patch(C, folded(Q(1, 2)));
+  const Algebraic_real r0 = alg(Z1(Integer(-1), Integer(0), Integer(2)), Q(0), Q(1));
+  const Z1 f(Integer(1), Integer(-8), Integer(8));
+  CHECK(has(res, r0, alg(f, Q(0), Q(1, 2)), r0));
+  CHECK(has(res, r0, alg(f, Q(1, 2), Q(1)), r0));
+  int at_r0 = 0;
+  for (const auto& p : res.points)
+    if (p.r == r0) {
+      ++at_r0;
+      CHECK(p.multiplicity == 1);
+      CHECK(p.kind == Curve_patch_intersection_kind::transversal);
+    }
+  CHECK(at_r0 == 2);
+}
