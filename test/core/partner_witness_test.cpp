@@ -141,6 +141,26 @@ TEST_CASE("the two-partner witness proves the node and nothing at regular points
   CHECK(internal::no_genuine_partner(eq, around, Parameter_box{Q(99, 100), Q(1), Q(-1), Q(1)}));
 }
 
+TEST_CASE("the two-partner witness with far partners (a stretched partner parameter)", "[surface][witness]") {
+  // The node of the previous test with psi's first parameter stretched, s = sigma / c: the partners become
+  // sigma = +-0.978 c. Newton on the 6 x 6 system stalls at the rounding level of sigma (steps ~ 1e-14 c), which
+  // the witness must accept (only its Krawczyk test decides); it refused every c >= 1000 before (a (3,3) rational
+  // benchmark pair had a node with a partner at v = -46 and was not certified).
+  const Patch phi = from_power({"u", "v", "0"}, 2, 2);
+  const double tn = std::sqrt(0.5), un = tn + 0.25;
+  const Parameter_box around{Q(un - 1e-3), Q(un + 1e-3), Q(tn - 1e-3), Q(tn + 1e-3)};
+  for (const char* c : {"50", "1000", "100000"}) {
+    INFO(c);
+    const std::string s = "(u/" + std::string(c) + ")";
+    const Patch psi = from_power({s + "^2 + " + s + "*(v^2 - 1/2)", "v", s + "^2 - v - 1/4"}, 2, 2);
+    const internal::Partner_equations eq(phi, psi);
+    CHECK(internal::prove_double_partner_point(eq, around, {un, tn}));
+    const double t = 0.3, sr = std::sqrt(t + 0.25), u = t + 0.25 + (t * t - 0.5) * sr;
+    const Parameter_box reg{Q(u - 1e-3), Q(u + 1e-3), Q(t - 1e-3), Q(t + 1e-3)};
+    CHECK_FALSE(internal::prove_double_partner_point(eq, reg, {u, t}));
+  }
+}
+
 TEST_CASE("partners of a bi-degree (3,2) self-intersection: the folded patch's double line, in closed form",
           "[surface][witness]") {
   // Phi(u,v) = ((u - 1/2)^2, v^2, (u - 1/2)(v - 1/3)) as a (3,2) patch (x degree-elevated in u). Phi(u, 1/3) =
