@@ -303,6 +303,11 @@ TEST_CASE("collapsed edge: a clear Error (the patch has base points)", "[curve_p
   const Patch P =
       Patch::from_power_form({in_u(Q1(1)), in_u(lin(0, 1)), v_times(lin(0, 1)), Q2(Q1(0), Q1(0), lin(0, 1))});
   CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P), Error);
+  try {
+    intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P);
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("the edge u = 0 collapses to the point (0, 0, 0)") != std::string::npos);
+  }
 }
 
 TEST_CASE("fold: a segment running along the double line", "[curve_patch][fibres]") {
