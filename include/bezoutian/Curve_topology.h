@@ -39,6 +39,10 @@ struct Curve_topology_vertex {
   /// Number of real branches through the point: half_branches / 2 for an interior point (a cusp counts 1).
   int branches = 0;
   bool on_boundary = false;
+  /// The curve is tangent to the domain edge here (an even-order contact): it passes through the point from
+  /// inside the domain (kind boundary, two arcs end here), or only the point itself is in the domain (kind
+  /// isolated).
+  bool tangent_to_boundary = false;
 };
 
 /// A piece of an edge inside one cell of the subdivision where the curve is proved to be a graph: for

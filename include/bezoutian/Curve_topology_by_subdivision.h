@@ -14,7 +14,10 @@
 //    close up). The crossings with the boundary are computed exactly (real roots of D on the box lines, exact
 //    isolation, shared by the boxes along a line); sorted by u, consecutive crossings are the ends of one arc.
 //    A crossing at a box corner or a multiple root on an edge (tangency with a box line) makes the box not
-//    simple;
+//    simple, except on a domain edge across which the box is simple (v = v0 or v1 with dD/dv != 0): there an
+//    even-multiplicity root is a contact of the graph with the edge, from inside (the arc passes through the
+//    point, which becomes a vertex) or from outside (the point alone: an isolated point of the locus in the
+//    domain), decided by exact signs (Touch); an odd-multiplicity root is a tangential crossing;
 //    A crossing at a corner of the domain is kept if the curve enters the box there (exact signs of dD/du,
 //    dD/dv at the rational corner); a crossing at an inner grid vertex is not handled (the result is then not
 //    certified);
@@ -488,6 +491,53 @@ class Subdivision_topology {
     return nodes_[k] = keys_.size() - 1;
   }
 
+  // A tangential contact of D = 0 with a domain edge (an even-multiplicity root x of D on the edge line, strictly
+  // inside a box edge) in a box that is simple across the edge (for the edge v = c: dD/dv != 0 on the box, so the
+  // curve is a graph v = g(u) there, through (x, c) with g'(x) = 0). D(u, c) = D(u, g(u)) + D_v (c - g(u)) = D_v
+  // (c - g(u)) (D_v at an intermediate point, of one sign on the box), so the sign of D on the edge next to x,
+  // that of its m-th derivative at x (m even), gives the side of g: the curve touches the edge from inside the
+  // domain (its arc passes through the contact point) or from outside (the point alone is in the domain).
+  struct Touch {
+    bool vertical;
+    Rational c;
+    int index;
+    Algebraic_real position;
+    bool inside;
+  };
+  // 1: from inside, 0: from outside, -1: undecided (a zero sign: cannot happen in a box simple across the edge)
+  int contact_from_inside(bool vertical, const Rational& c, const Algebraic_real& x, int multiplicity) const {
+    // p(x) = D on the line (x the free coordinate), q(x) = the derivative of D across the line
+    std::vector<Rational> p, q;
+    if (!vertical) {  // v = c: p(u) = sum_j D_j(u) c^j, q(u) = sum_j j D_j(u) c^(j-1)
+      std::vector<Rational> cp(1, Rational(1));
+      for (int j = 1; j <= D_.degree(); ++j) cp.push_back(cp.back() * c);
+      for (int j = 0; j <= D_.degree(); ++j)
+        for (int i = 0; i <= D_[j].degree(); ++i) {
+          if (CGAL::is_zero(D_[j][i])) continue;
+          if (p.size() <= std::size_t(i)) p.resize(std::size_t(i + 1), Rational(0)), q.resize(std::size_t(i + 1), Rational(0));
+          p[std::size_t(i)] += Rational(D_[j][i]) * cp[std::size_t(j)];
+          if (j >= 1) q[std::size_t(i)] += Rational(D_[j][i]) * Rational(j) * cp[std::size_t(j - 1)];
+        }
+    } else {  // u = c: p(v) = sum_j D_j(c) v^j, q(v) = sum_j D_j'(c) v^j
+      for (int j = 0; j <= D_.degree(); ++j) {
+        Rational a(0), da(0);
+        for (int i = D_[j].degree(); i >= 0; --i) {
+          da = da * c + a;
+          a = a * c + Rational(D_[j][i]);
+        }
+        p.push_back(a);
+        q.push_back(da);
+      }
+    }
+    Polynomial_1<Rational> P(p.begin(), p.end()), Q(q.begin(), q.end());
+    for (int k = 0; k < multiplicity; ++k) P = CGAL::differentiate(P);
+    const int side = x.sign_of(P), across = x.sign_of(Q);
+    // bottom / left edge: inside iff sign D(edge) = -sign(D across); top / right edge: iff the signs agree
+    if (side == 0 || across == 0) return -1;
+    const bool low_edge = vertical ? c == box_.u0 : c == box_.v0;
+    return (low_edge ? side == -across : side == across) ? 1 : 0;
+  }
+
   // A crossing on one edge of a box: its line, its root there and its position along the sorting coordinate.
   struct Crossing {
     bool vertical;
@@ -498,15 +548,26 @@ class Subdivision_topology {
 
   // Collects the crossings of the edge (line `vertical` at c, other coordinate in [lo, hi]). Returns false if a
   // crossing is at an end (a box corner) or multiple (tangency with the line).
+  // `touches` (only for a domain edge of a box that is simple across it): multiple roots strictly inside the edge
+  // are allowed there (see contact_with_domain_edge) instead of making the box unresolved.
   bool edge_crossings(bool vertical, const Rational& c, const Rational& lo, const Rational& hi, bool sort_by_u,
-                      std::vector<Crossing>& out) {
+                      std::vector<Crossing>& out, std::vector<Touch>* touches = nullptr) {
     const Line& L = line(vertical, c);
     if (failed_) return false;
     for (std::size_t k = 0; k < L.roots.size(); ++k) {
       const Algebraic_real& x = L.roots[k].root;
       const int cl = x.compare(lo), ch = x.compare(hi);
       if (cl < 0 || ch > 0) continue;
-      if (L.roots[k].multiplicity > 1) return false;
+      if (L.roots[k].multiplicity > 1) {
+        if (!touches || cl == 0 || ch == 0) return false;
+        if (L.roots[k].multiplicity % 2 == 0) {  // the curve touches the edge without crossing it
+          const int inside = contact_from_inside(vertical, c, x, L.roots[k].multiplicity);
+          if (inside < 0) return false;
+          touches->push_back(Touch{vertical, c, int(k), x, inside == 1});
+          continue;
+        }
+        // odd multiplicity: a tangential crossing, an ordinary crossing for the topology (below)
+      }
       if (cl == 0 || ch == 0) {  // at a box corner: domain corners are handled by corner_crossing
         const Rational& e = cl == 0 ? lo : hi;
         const bool domain_corner = (vertical ? (c == box_.u0 || c == box_.u1) : (c == box_.v0 || c == box_.v1)) &&
@@ -563,9 +624,15 @@ class Subdivision_topology {
   // A simple box: crossings sorted along u (dv != 0) or v (du != 0); consecutive pairs are arcs.
   bool resolve(const Box& B, bool dv_simple) {
     std::vector<Crossing> cr;
+    std::vector<Touch> touches;
     const bool by_u = dv_simple;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr))
+    // contacts are allowed on the domain edges across which the box is simple (v = v0, v1 if dD/dv != 0)
+    auto t_vertical = [&](const Rational& c) { return !dv_simple && (c == box_.u0 || c == box_.u1) ? &touches : nullptr; };
+    auto t_horizontal = [&](const Rational& c) { return dv_simple && (c == box_.v0 || c == box_.v1) ? &touches : nullptr; };
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr, t_vertical(B.u0)) ||
+        !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr, t_vertical(B.u1)) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr, t_horizontal(B.v0)) ||
+        !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr, t_horizontal(B.v1)))
       return false;
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
@@ -574,12 +641,35 @@ class Subdivision_topology {
           return false;
     if (cr.size() % 2 != 0) return false;  // cannot happen for a simple box; be safe and subdivide
     std::sort(cr.begin(), cr.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
-    for (std::size_t k = 0; k + 1 < cr.size(); k += 2) {
-      Arc arc{node(cr[k].vertical, cr[k].c, cr[k].index), node(cr[k + 1].vertical, cr[k + 1].c, cr[k + 1].index), {},
-              Parameter_box{B.u0, B.u1, B.v0, B.v1}, by_u ? 0 : 1};
-      sample_arc(B, by_u, cr[k].position, cr[k + 1].position, arc.inner);
-      arcs_.push_back(arc);
+    std::sort(touches.begin(), touches.end(), [](const Touch& x, const Touch& y) { return x.position < y.position; });
+    // a contact from inside lies on one arc (the graph passes through it): it splits that arc
+    std::vector<std::vector<const Touch*>> on_arc(cr.size() / 2);
+    for (const Touch& t : touches) {
+      if (!t.inside) continue;
+      bool placed = false;
+      for (std::size_t k = 0; k + 1 < cr.size() && !placed; k += 2)
+        if (cr[k].position < t.position && t.position < cr[k + 1].position) on_arc[k / 2].push_back(&t), placed = true;
+      if (!placed) return false;  // not consistent with a graph: subdivide instead
     }
+    for (std::size_t k = 0; k + 1 < cr.size(); k += 2) {
+      std::size_t from = node(cr[k].vertical, cr[k].c, cr[k].index);
+      Algebraic_real from_pos = cr[k].position;
+      auto add = [&](std::size_t to, const Algebraic_real& to_pos) {
+        Arc arc{from, to, {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, by_u ? 0 : 1};
+        sample_arc(B, by_u, from_pos, to_pos, arc.inner);
+        arcs_.push_back(arc);
+        from = to;
+        from_pos = to_pos;
+      };
+      for (const Touch* t : on_arc[k / 2]) {
+        const std::size_t n = node(t->vertical, t->c, t->index);
+        touch_[n] = 2;
+        add(n, t->position);
+      }
+      add(node(cr[k + 1].vertical, cr[k + 1].c, cr[k + 1].index), cr[k + 1].position);
+    }
+    for (const Touch& t : touches)
+      if (!t.inside) touch_[node(t.vertical, t.c, t.index)] = 0;  // the contact point alone: an isolated point
     return true;
   }
 
@@ -1049,6 +1139,11 @@ class Subdivision_topology {
     v.on_boundary = on_domain_boundary(n);
     v.kind = v.on_boundary ? Curve_topology_vertex::boundary
                            : (cut_.count(n) ? Curve_topology_vertex::phantom_cut : Curve_topology_vertex::regular);
+    const auto touch = touch_.find(n);
+    if (touch != touch_.end()) {
+      v.tangent_to_boundary = true;
+      if (touch->second == 0) v.kind = Curve_topology_vertex::isolated;
+    }
     return v;
   }
 
@@ -1076,8 +1171,11 @@ class Subdivision_topology {
         }
         continue;
       }
+      const auto touch = touch_.find(n);
       const std::size_t want =
-          on_domain_boundary(n) ? 1 : (keys_[n].singular ? (singular_[std::size_t(keys_[n].index)].isolated ? 0 : 4) : 2);
+          touch != touch_.end()
+              ? touch->second
+              : (on_domain_boundary(n) ? 1 : (keys_[n].singular ? (singular_[std::size_t(keys_[n].index)].isolated ? 0 : 4) : 2));
       if (at[n].size() != want) {
         fail("inconsistent subdivision: a crossing joins " + std::to_string(at[n].size()) + " arcs");
         return false;
@@ -1142,9 +1240,10 @@ class Subdivision_topology {
       return n;
     };
     for (std::size_t n = 0; n < keys_.size(); ++n)
-      if (keys_[n].singular && singular_[std::size_t(keys_[n].index)].isolated) {  // an acnode: its own component
+      if ((keys_[n].singular && singular_[std::size_t(keys_[n].index)].isolated) ||
+          (touch_.count(n) && touch_.at(n) == 0)) {  // an acnode or an outside contact: its own component
         Curve_topology_component c;
-        c.closed = true;
+        c.closed = keys_[n].singular;  // a contact point lies on the domain boundary
         c.isolated_point = true;
         c.vertices.push_back(vertex(n));
         out.components.push_back(c);
@@ -1198,6 +1297,7 @@ class Subdivision_topology {
   std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)
   static constexpr int undecided_depth = 16;  // below it such a point waits for the phantom exclusion
   std::set<std::size_t> cut_;             // nodes on the edges of excised boxes
+  std::map<std::size_t, std::size_t> touch_;  // contacts with a domain edge: node -> arcs there (2 inside, 0 outside)
   std::vector<Parameter_box> excised_;
   bool failed_ = false;
   std::string failure_;

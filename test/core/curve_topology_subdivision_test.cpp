@@ -107,6 +107,65 @@ TEST_CASE("subdivision: curves meeting the boundary, through domain corners", "[
   CHECK(r.topology.components.empty());
 }
 
+TEST_CASE("subdivision: curves tangent to a domain edge, from inside and from outside", "[topology][subdivision]") {
+  auto touching = [](const Curve_topology_in_box& t) {
+    std::vector<const Curve_topology_vertex*> r;
+    for (const auto& x : t.vertices)
+      if (x.tangent_to_boundary) r.push_back(&x);
+    return r;
+  };
+  // v = (u - 1/2)^2 touches the edge v = 0 at (1/2, 0) from inside: one arc from (0, 1/4) through the contact to
+  // (1, 1/4), i.e. two edges and three boundary points, the contact with two arcs
+  auto r = subdivide_curve_in_box(4 * v - (2 * u - 1) * (2 * u - 1), Parameter_box{});
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.components.size() == 1);
+  CHECK_FALSE(r.topology.components[0].closed);
+  CHECK(r.topology.edges.size() == 2);
+  CHECK(r.topology.number_of_boundary_points() == 3);
+  auto t = touching(r.topology);
+  REQUIRE(t.size() == 1);
+  CHECK(t[0]->kind == Curve_topology_vertex::boundary);
+  CHECK(t[0]->u_lo <= 0.5);
+  CHECK(t[0]->u_hi >= 0.5);
+  CHECK(t[0]->v == 0);
+  check_samples(4 * v - (2 * u - 1) * (2 * u - 1), r.topology, 1e-12);
+  // v = -(u - 1/3)^2 (the edge v = 0 from outside) times u = (v - 2/5)^2 (the edge u = 0 from inside, at
+  // v = 2/5): the first curve meets the closed square in (1/3, 0) only, an isolated point; the second runs from
+  // (4/25, 0) through the contact (0, 2/5) to (9/25, 1).
+  const P2 below = 9 * v + (3 * u - 1) * (3 * u - 1), right = 25 * u - (5 * v - 2) * (5 * v - 2);
+  r = subdivide_curve_in_box(below * right, Parameter_box{});
+  REQUIRE(r.certified);
+  t = touching(r.topology);
+  REQUIRE(t.size() == 2);
+  std::size_t isolated = 0, arcs = 0;
+  for (const auto& c : r.topology.components) {
+    isolated += c.isolated_point;
+    if (!c.isolated_point) arcs += c.edges.size();
+    CHECK_FALSE(c.closed);
+  }
+  CHECK(isolated == 1);
+  CHECK(arcs == 2);  // (4/25, 0) -> (0, 2/5) -> (9/25, 1)
+  for (const auto* x : t) {
+    if (x->kind == Curve_topology_vertex::isolated) {
+      CHECK(x->u_lo <= 1.0 / 3);
+      CHECK(x->u_hi >= 1.0 / 3);
+      CHECK(x->v == 0);
+    } else {
+      CHECK(x->kind == Curve_topology_vertex::boundary);
+      CHECK(x->u == 0);
+      CHECK(x->v_lo <= 0.4);
+      CHECK(x->v_hi >= 0.4);
+    }
+  }
+  CHECK(r.topology.number_of_boundary_points() == 4);
+  // odd contact (an inflection on the edge): v = (u - 1/2)^3 crosses v = 0 tangentially, one arc
+  r = subdivide_curve_in_box(8 * v - (2 * u - 1) * (2 * u - 1) * (2 * u - 1), Parameter_box{});
+  REQUIRE(r.certified);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(touching(r.topology).empty());
+  CHECK(r.topology.number_of_boundary_points() == 2);
+}
+
 TEST_CASE("subdivision: an ordinary node and an isolated point at rational points are certified exactly",
           "[topology][subdivision]") {
   // the diagonals of the unit square cross at (1/2, 1/2): one component, four boundary points (the domain corners)
