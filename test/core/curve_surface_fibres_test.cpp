@@ -341,3 +341,13 @@ TEST_CASE("fold, c = 1/2: r, u and v all irrational on the double line (Krawczyk
     }
   CHECK(at_r0 == 2);
 }
+
+TEST_CASE("fold restricted to one sheet: the second preimage lies outside the domain", "[curve_patch][fibres]") {
+  // restriction to u in [1/2, 1] (s in [0, 1]): the double line point (0, 1/2, 0) keeps only s = 1/2, i.e. u = 3/4,
+  // at the restricted parameter (3/4 - 1/2) / (1/2) = 1/2; the kernel still sees both preimages (rank drop)
+  const Patch P = folded(Q(1, 4)).restriction(Q(1, 2), Q(1), Q(0), Q(1));
+  const auto res = intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, P);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, Q(1, 2), Q(1, 2), Q(1, 2)));
+  CHECK(res.points[0].multiplicity == 1);
+}
