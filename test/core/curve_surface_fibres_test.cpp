@@ -12,6 +12,7 @@
 #include <bezoutian/Curve_surface_intersection.h>
 
 #include <catch2/catch.hpp>
+#include <random>
 
 using namespace bezoutian;
 
@@ -350,4 +351,66 @@ TEST_CASE("fold restricted to one sheet: the second preimage lies outside the do
   REQUIRE(res.points.size() == 1);
   CHECK(has(res, Q(1, 2), Q(1, 2), Q(1, 2)));
   CHECK(res.points[0].multiplicity == 1);
+}
+
+TEST_CASE("random double covers Phi(u,v) = Psi((2u-1)^2, v): both preimages of a constructed hit",
+          "[curve_patch][fibres]") {
+  // Psi a random bi-degree (2,1) or (2,2) patch (polynomial and rational): Phi covers Psi([0,1]^2) twice, and a
+  // segment through Psi(a, b) = Phi((1 +- sqrt(a))/2, b) at r0 = 1/3 must be reported there with both preimages
+  // (roots of 4u^2 - 4u + 1 - a). Every reported triple is checked to 1e-20 and has its partner (r, 1 - u, v).
+  std::mt19937 g(20261122);
+  auto rnd = [&g](int range, int den) { return Q(int(g() % unsigned(2 * range + 1)) - range, den); };
+  for (int trial = 0; trial < 8; ++trial) {
+    const bool rational = trial % 2 == 1;
+    const std::size_t nv = trial < 6 ? 2 : 3;
+    std::vector<std::vector<P3>> pts(3, std::vector<P3>(nv));
+    std::vector<std::vector<Q>> w(3, std::vector<Q>(nv, Q(1)));
+    for (auto& row : pts)
+      for (auto& p : row) p = {rnd(10, 7), rnd(10, 5), rnd(10, 3)};
+    if (rational)
+      for (auto& row : w)
+        for (auto& x : row) x = Q(int(g() % 4) + 1, 2);
+    const Patch Psi(pts, w);
+    // compose with u -> (2u - 1)^2 in the power form
+    const auto pf = Psi.power_form();
+    const Q1 sq = lin(-1, 2) * lin(-1, 2);
+    Patch::Power_form phi;
+    for (int k = 0; k < 4; ++k) {
+      std::vector<Q1> rows;
+      for (int j = 0; j <= pf[k].degree(); ++j) {
+        Q1 c(0), p(1);
+        for (int i = 0; i <= pf[k][j].degree(); ++i, p *= sq) c += Q1(pf[k][j][i]) * p;
+        rows.push_back(c);
+      }
+      phi[k] = Q2(rows.begin(), rows.end());
+    }
+    const Patch P = Patch::from_power_form(phi);
+    const Q a = trial % 3 == 0 ? Q(1, 4) : Q(1, 3), b(2, 5), r0(1, 3);
+    const P3 q = Psi(a, b);
+    const P3 D{rnd(10, 3), rnd(10, 3), rnd(10, 3)};
+    P3 A, B;
+    for (int k = 0; k < 3; ++k) {
+      A[k] = q[k] - r0 * D[k];
+      B[k] = A[k] + D[k];
+    }
+    const auto res = intersect_segment_patch(A, B, P);
+    const Z1 f(Integer(a.denominator() - a.numerator()), Integer(-4 * a.denominator()), Integer(4 * a.denominator()));
+    CHECK(has(res, r0, alg(f, Q(0), Q(1, 2)), b));
+    CHECK(has(res, r0, alg(f, Q(1, 2), Q(1)), b));
+    const Q tiny = Q(1) / Q(Integer("100000000000000000000000000000000000000000")), eps = CGAL::ipower(Q(1, 100000), 4);
+    for (const auto& p : res.points) {
+      p.r.refine_to_width(tiny);
+      p.u.refine_to_width(tiny);
+      p.v.refine_to_width(tiny);
+      P3 C;
+      for (int k = 0; k < 3; ++k) C[k] = A[k] + p.r.lower() * (B[k] - A[k]);
+      const P3 S = P(p.u.lower(), p.v.lower());
+      for (int k = 0; k < 3; ++k) CHECK(CGAL::abs(C[k] - S[k]) < eps * Q(1000));
+      int partners = 0;
+      for (const auto& o : res.points)
+        partners += o.r == p.r && o.v == p.v && std::abs(o.u.to_double() + p.u.to_double() - 1) < 1e-15;
+      CHECK(partners == 1);
+      CHECK(p.multiplicity == 1);
+    }
+  }
 }
