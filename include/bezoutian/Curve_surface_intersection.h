@@ -548,6 +548,8 @@ class Curve_patch_engine {
     if (disjoint_boxes()) return res;
     matrix_ = std::make_shared<Patch_implicit_matrix>(patch_);
     if (is_constant()) {
+      // with base points the kernel of M always holds their monomial vectors: the kernel test would be wrong
+      check_implicit_matrix_regular();
       const auto pre = preimages(curve_(Rational(0)));
       if (!pre.empty()) res.overlaps.push_back({Algebraic_real(0), Algebraic_real(1)});
       return res;

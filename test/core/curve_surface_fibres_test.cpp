@@ -414,3 +414,10 @@ TEST_CASE("random double covers Phi(u,v) = Psi((2u-1)^2, v): both preimages of a
     }
   }
 }
+
+TEST_CASE("constant curve and a patch with base points: Error, not a kernel answer", "[curve_patch][fibres]") {
+  // the plain fold has the base point (oo, 0), whose monomial vector is in every kernel of M: without the check the
+  // point (0, 1/2, 0) of the patch would be reported as off the patch
+  const Rational_bezier_curve_3<Q> on({P3{Q(0), Q(1, 2), Q(0)}, P3{Q(0), Q(1, 2), Q(0)}});
+  CHECK_THROWS_AS(intersect_curve_patch(on, plain_fold(Q(1, 4))), Error);
+}
