@@ -82,6 +82,8 @@ void run_curve_patch_intersect(const Intersect_options& o) {
       q["multiplicity"] = p.multiplicity;
       q["kind"] = bezoutian::to_string(p.kind);
       q["tangent"] = p.tangent;
+      // a collapsed line of the patch through the point: all of u = const ("u") or v = const ("v") are preimages
+      if (p.collapsed_line >= 0) q["collapsed_line"] = p.collapsed_line == 0 ? "u" : "v";
       pts.push_back(q);
     }
     j["intersections"] = pts;
@@ -101,7 +103,11 @@ void run_curve_patch_intersect(const Intersect_options& o) {
               << "\n  point (";
     const auto q = point(c, p.r);
     for (std::size_t k = 0; k < q.size(); ++k) std::cout << (k ? ", " : "") << q[k];
-    std::cout << "), " << bezoutian::to_string(p.kind) << ", multiplicity " << p.multiplicity << "\n";
+    std::cout << "), " << bezoutian::to_string(p.kind) << ", multiplicity " << p.multiplicity;
+    if (p.collapsed_line >= 0)
+      std::cout << ", collapsed line: every (" << (p.collapsed_line == 0 ? "u, v'" : "u', v") << ") with "
+                << (p.collapsed_line == 0 ? "v'" : "u'") << " in [0,1] is a preimage";
+    std::cout << "\n";
   }
   for (const auto& v : r.overlaps)
     std::cout << "  overlap: s in [" << exact_or_decimal(v.r0) << ", " << exact_or_decimal(v.r1) << "]\n";

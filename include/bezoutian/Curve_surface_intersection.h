@@ -85,6 +85,10 @@ struct Curve_patch_intersection_point {
   bool tangent = false;
   /// Floating-point approximation of the common point (C evaluated at the double nearest to r).
   std::array<double, 3> point{};
+  /// -1, or a collapsed line of the patch through this point: 0 = every (u, v') with v' in [0,1] is a preimage (the
+  /// iso-line u = this->u maps to one point; v is reported as 0), 1 = every (u', v), u' in [0,1] (u reported as 0).
+  /// Such points have multiplicity 0 (not determined). Only patches with base points have collapsed lines.
+  int collapsed_line = -1;
 };
 
 /// A piece C([r0, r1]) of the curve contained in the patch Phi([0,1]^2) (r0 < r1, exact ends).
@@ -562,8 +566,10 @@ class Curve_patch_engine {
     R_ = R;
     CS_TICK("det");
     if (CGAL::is_zero(R)) {
-      check_implicit_matrix_regular();
-      on_surface_case(res);
+      if (implicit_matrix_regular())
+        on_surface_case(res);
+      else
+        base_point_case(res);
     } else {
       const auto roots = separated_roots(R, Rational(0), Rational(1));
       CS_TICK("isolate");
@@ -590,7 +596,8 @@ class Curve_patch_engine {
 
   /// The preimages (u_j, v_k) over the root r of R (the grid step; see Fibre_system, decide_grid_point). Requires
   /// R_ and the curve form H_; throws Singular_fibre_error for a singular solution with an irrational coordinate.
-  std::vector<Fibre_point> fibre(const Algebraic_real& r) {
+  std::vector<Fibre_point> fibre(const Algebraic_real& r,
+                                 const std::vector<std::pair<int, Rational>>& skip_lines = {}) {
     compute_eliminants();
     const Fibre_system S(H_, dense_patch_form());
     std::array<Root_window, 3> w{root_window(R_, r), Root_window{}, Root_window{}};
@@ -601,6 +608,9 @@ class Curve_patch_engine {
       w[1] = root_window(U_, x.root);
       for (const Root_window& y : wv) {
         w[2] = y;
+        bool on_skipped_line = false;  // a collapsed line through C(r): every point of it is a preimage
+        for (const auto& l : skip_lines) on_skipped_line = on_skipped_line || w[1 + l.first].x == Algebraic_real(l.second);
+        if (on_skipped_line) continue;
         const int d = decide_grid_point(S, w);
         if (d != 0) out.push_back(Fibre_point{w[1].x, w[2].x, d == 1});
       }
@@ -627,12 +637,17 @@ class Curve_patch_engine {
   }
 
   // det M(w,x) == 0 identically: base points or a patch whose image is not a surface.
-  void check_implicit_matrix_regular() const {
+  bool implicit_matrix_regular() const {
     const int pts[3][4] = {{3, -7, 11, 5}, {-2, 13, 1, -9}, {17, 4, -6, 23}};
     for (const auto& q : pts) {
       const Qmatrix A = matrix_->at_point({Rational(q[0]), Rational(q[1]), Rational(q[2]), Rational(q[3])});
-      if (right_kernel(A).empty()) return;
+      if (right_kernel(A).empty()) return true;
     }
+    return false;
+  }
+
+  void check_implicit_matrix_regular() const {
+    if (implicit_matrix_regular()) return;
     throw Error("intersect_curve_patch: the implicit matrix of the patch is singular (the patch has base points or "
                 "its image is not a surface" + collapsed_edges() + "); not supported");
   }
@@ -697,9 +712,10 @@ class Curve_patch_engine {
 
   // Points over r from the grid step: multiplicity 1 for a simple solution of C(r) = Phi(u,v) (the curve crosses
   // that sheet transversally), 0 and tangent for a singular one (decided exactly, at most one irrational coordinate).
-  void add_fibre(Curve_patch_intersection_result& res, const Algebraic_real& r) {
+  void add_fibre(Curve_patch_intersection_result& res, const Algebraic_real& r,
+                  const std::vector<std::pair<int, Rational>>& skip_lines = {}) {
     CS_TICK("grid step");
-    for (const Fibre_point& f : fibre(r)) {
+    for (const Fibre_point& f : fibre(r, skip_lines)) {
       add_point(res, r, f.u, f.v, f.simple ? 1 : 0);
       if (!f.simple) {
         res.points.back().tangent = true;
@@ -771,27 +787,55 @@ class Curve_patch_engine {
   // the curve by two linear forms (L_a, L_b) (homogenized: F_ab(X, Y, W)), g_ab(u,v) = F_ab(L_a(Phi), L_b(Phi),
   // Phi_0) vanishes at every preimage (u,v) of a point of the curve; U = Res_v(g_ab, g_ac), V = Res_u(g_ab, g_ac)
   // vanish at the parameters of every intersection. Several projections are tried until U, V are nonzero.
-  void compute_eliminants() {
+  //
+  // With remove_lines (patches with base points only): common factors c_u(u) (c_v(v)) of g_ab, g_ac depending on
+  // u (v) alone are removed first and kept in removed_lines_[0] ([1]) (the iso-lines u = u0 they vanish on map into
+  // the curve's Zariski closure: collapsed lines, see base_point_case); then U = c_u Res_v(g_ab/c_u, g_ac/c_u)
+  // (or the degree-0 forms of `eliminant`) vanishes at the u of every intersection, on such a line or not.
+  void compute_eliminants(bool remove_lines = false) {
     if (have_eliminants_) return;
     const auto Phi = dense_patch_form();
     const int forms[6][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, -3}, {3, -1, 2}, {-2, 5, 1}};
     const int triples[4][3] = {{0, 1, 2}, {1, 2, 0}, {3, 4, 5}, {4, 5, 3}};
     for (const auto& t : triples) {
-      const Z2 g1 = projected_on_patch(forms[t[0]], forms[t[1]], Phi);
-      const Z2 g2 = projected_on_patch(forms[t[0]], forms[t[2]], Phi);
+      Z2 g1 = projected_on_patch(forms[t[0]], forms[t[1]], Phi);
+      Z2 g2 = projected_on_patch(forms[t[0]], forms[t[2]], Phi);
       if (CGAL::is_zero(g1) || CGAL::is_zero(g2)) continue;
-      const Z1 U = outer_resultant(g1, g2);
-      const Z1 V = outer_resultant(swap_uv(g1), swap_uv(g2));
+      if (remove_lines) {
+        removed_lines_[0] = remove_common_content(g1, g2);  // factors in u alone
+        g1 = swap_uv(g1);
+        g2 = swap_uv(g2);
+        removed_lines_[1] = remove_common_content(g1, g2);  // factors in v alone
+        g1 = swap_uv(g1);
+        g2 = swap_uv(g2);
+      }
+      const Z1 U = remove_lines ? eliminant(g1, g2) : outer_resultant(g1, g2);
+      const Z1 V = remove_lines ? eliminant(swap_uv(g1), swap_uv(g2)) : outer_resultant(swap_uv(g1), swap_uv(g2));
       if (CGAL::is_zero(U) || CGAL::is_zero(V)) continue;
-      U_ = U;
-      V_ = V;
-      eliminant_roots_[0] = separated_roots(U, Rational(0), Rational(1));
-      eliminant_roots_[1] = separated_roots(V, Rational(0), Rational(1));
+      // the removed lines' factors are put back: U, V vanish at the u, v of every intersection, on them or not
+      U_ = U * removed_lines_[0];
+      V_ = V * removed_lines_[1];
+      eliminant_roots_[0] = separated_roots(U_, Rational(0), Rational(1));
+      eliminant_roots_[1] = separated_roots(V_, Rational(0), Rational(1));
       CS_TICK("eliminants U, V");
       have_eliminants_ = true;
       return;
     }
     throw Error("intersect_curve_patch: no projection gives nonzero eliminants U(u), V(v) (degenerate input)");
+  }
+
+  // The gcd c (in the inner variable) of all coefficients of g1 and g2 is divided out of both; returns c.
+  static Z1 remove_common_content(Z2& g1, Z2& g2) {
+    Z1 c(0);
+    for (const Z2* g : {&g1, &g2})
+      for (int j = 0; j <= g->degree(); ++j) c = CGAL::is_zero(c) ? (*g)[j] : Z1(CGAL::gcd(c, (*g)[j]));
+    if (CGAL::is_zero(c) || c.degree() < 1) return Z1(1);
+    for (Z2* g : {&g1, &g2}) {
+      std::vector<Z1> q;
+      for (int j = 0; j <= g->degree(); ++j) q.push_back(CGAL::integral_division((*g)[j], c));
+      *g = Z2(q.begin(), q.end());
+    }
+    return c;
   }
 
   std::array<Z2, 4> dense_patch_form() const {
@@ -853,6 +897,15 @@ class Curve_patch_engine {
 
   static Z2 swap_uv(const Z2& g) { return typename CGAL::Polynomial_traits_d<Z2>::Swap()(g, 0, 1); }
 
+  // A polynomial in the inner variable vanishing at the inner coordinate of every common zero of g1, g2: Res_v, or
+  // when g1 (g2) does not depend on the outer variable, g1[0] (g2[0]), or gcd(g1[0], g2[0]) if neither does.
+  static Z1 eliminant(const Z2& g1, const Z2& g2) {
+    if (g1.degree() < 1 && g2.degree() < 1) return Z1(CGAL::gcd(g1[0], g2[0]));
+    if (g1.degree() < 1) return g1[0];
+    if (g2.degree() < 1) return g2[0];
+    return outer_resultant(g1, g2);
+  }
+
   // Res_v(g1, g2) by the Sylvester matrix in the outer variable (entries in Z[u]).
   static Z1 outer_resultant(const Z2& g1, const Z2& g2) {
     const int d1 = g1.degree(), d2 = g2.degree();
@@ -882,6 +935,130 @@ class Curve_patch_engine {
       p.kind = p.tangent ? Curve_patch_intersection_kind::tangent : Curve_patch_intersection_kind::transversal;
     p.point = curve_.evaluate(r.to_double());
     res.points.push_back(p);
+  }
+
+  // ------------------------------------------------------------------ patches with base points
+  // det M(w,x) == 0 identically (base points, e.g. at infinity or from a collapsed edge): no eliminant from the
+  // implicit matrix and no kernel inversion. Instead every intersection parameter is a root of
+  //   R(r) = Res_u(U(u), h(r,u) / cont_u h),  h(r,u) = Res_v(V(v), E(r,u,v)),  E = sum_k c_k E_k,
+  // E_k = X_k(r) Phi_0(u,v) - W(r) Phi_k(u,v): h(r0,u0) = 0 at an intersection (V(v0) = 0, E(r0,u0,v0) = 0), and
+  // removing the content cont_u h (its roots u1 are the u of pairs (u1, v1), V(v1) = 0, where E vanishes for all r:
+  // affine base points) keeps that zero unless cont_u h(u0) = 0, which is excluded by an exact check (no common
+  // root of cont_u h and U in [0,1], else the next combination c, else Error). R != 0: h / cont_u h is primitive,
+  // so it does not vanish identically at any root of U. Every root of R in [0,1] is then decided by the grid step.
+  // Collapsed lines (an iso-line u = u0 mapped to one point P, removed from g_ab, g_ac by compute_eliminants) are
+  // reported separately, at the exact roots of gcd_k (X_k - P_k W).
+  void base_point_case(Curve_patch_intersection_result& res) {
+    compute_eliminants(true);
+    std::vector<std::pair<Algebraic_real, std::pair<int, Rational>>> hits;  // r, (direction, value of the line)
+    for (int dir = 0; dir < 2; ++dir) {
+      if (removed_lines_[dir].degree() < 1) continue;
+      for (const Isolated_root& x : isolate_real_roots(removed_lines_[dir], Rational(0), Rational(1))) {
+        Rational p0, p[3];
+        if (!x.root.is_rational() || !collapsed_line(dir, x.root.rational_value(), p0, p))
+          throw Error("intersect_curve_patch: the iso-line " + std::string(dir ? "v" : "u") + " ~ " +
+                      x.root.to_decimal_string(12) + " of the patch maps into the curve's Zariski closure and is not "
+                      "collapsed to a point (the curve runs along the patch); patch with base points: not supported");
+        Z1 g(0);  // gcd_k (X_k - P_k W): the parameters with C(r) = P
+        for (int k = 0; k < 3; ++k) {
+          const Z1 f = H_[k + 1] * Z1(Integer(p0.numerator() * p[k].denominator())) -
+                       H_[0] * Z1(Integer(p[k].numerator()));
+          g = CGAL::is_zero(g) ? f : Z1(CGAL::gcd(g, f));
+        }
+        if (CGAL::is_zero(g) || g.degree() < 1) continue;
+        for (const Isolated_root& r : isolate_real_roots(g, Rational(0), Rational(1))) {
+          hits.push_back({r.root, {dir, x.root.rational_value()}});
+          const Algebraic_real a(x.root.rational_value());
+          add_point(res, r.root, dir == 0 ? a : Algebraic_real(0), dir == 0 ? Algebraic_real(0) : a, 0);
+          res.points.back().collapsed_line = dir;
+        }
+      }
+    }
+    R_ = base_point_r_eliminant();
+    CS_TICK("base-point eliminant");
+    for (const Isolated_root& root : separated_roots(R_, Rational(0), Rational(1))) {
+      std::vector<std::pair<int, Rational>> skip;
+      for (const auto& h : hits)
+        if (h.first == root.root) skip.push_back(h.second);
+      add_fibre(res, root.root, skip);
+    }
+  }
+
+  // Is the iso-line u = t (dir 0) or v = t (dir 1) mapped to one point (p0 : p)? Exact.
+  bool collapsed_line(int dir, const Rational& t, Rational& p0, Rational (&p)[3]) const {
+    const auto Phi = dense_patch_form();
+    std::array<Q1, 4> e;
+    for (int k = 0; k < 4; ++k) {
+      std::vector<Rational> c;
+      if (dir == 0) {
+        for (int j = 0; j <= Phi[k].degree(); ++j) c.push_back(value_at(Phi[k][j], t));
+        e[k] = Q1(c.begin(), c.end());
+      } else {
+        Q1 g(0), tp(1);
+        for (int j = 0; j <= Phi[k].degree(); ++j, tp *= Q1(t)) g += to_q(Phi[k][j]) * tp;
+        e[k] = g;
+      }
+    }
+    if (CGAL::is_zero(e[0])) return false;
+    int i0 = 0;
+    while (CGAL::is_zero(e[0][i0])) ++i0;
+    for (int k = 1; k < 4; ++k)
+      if (e[k] * Q1(e[0][i0]) != e[0] * Q1(e[k][i0])) return false;
+    p0 = Rational(1);
+    for (int k = 0; k < 3; ++k) p[k] = e[k + 1][i0] / e[0][i0];
+    return true;
+  }
+
+  Z1 base_point_r_eliminant() const {
+    if (U_.degree() < 1 || V_.degree() < 1) return Z1(1);  // no u or no v candidates: no isolated intersection
+    const auto Phi = dense_patch_form();
+    const int combos[3][3] = {{1, 2, 3}, {3, -1, 2}, {-2, 5, 1}};
+    for (const auto& c : combos) {
+      // E = sum_k c_k (X_k Phi_0 - W Phi_k): v-coefficients e_j(r, u), inner variable r, outer u
+      const int n = patch_.degree_v();
+      std::vector<Z2> e;
+      for (int j = 0; j <= n; ++j) {
+        std::vector<Z1> cu;
+        int du = 0;
+        for (int k = 0; k < 4; ++k) du = std::max(du, j <= Phi[k].degree() ? Phi[k][j].degree() : 0);
+        for (int i = 0; i <= du; ++i) {
+          Z1 t(0);
+          for (int k = 1; k <= 3; ++k) {
+            auto co = [&](int kk) { return j <= Phi[kk].degree() && i <= Phi[kk][j].degree() ? Phi[kk][j][i] : Integer(0); };
+            t += Z1(Integer(c[k - 1])) * (H_[k] * Z1(co(0)) - H_[0] * Z1(co(k)));
+          }
+          cu.push_back(t);
+        }
+        e.push_back(Z2(cu.begin(), cu.end()));
+      }
+      while (!e.empty() && CGAL::is_zero(e.back())) e.pop_back();
+      if (e.size() < 2) continue;  // E does not depend on v: try another combination
+      const int dE = int(e.size()) - 1, dV = V_.degree();
+      const std::size_t N = std::size_t(dE + dV);
+      std::vector<std::vector<Z2>> S(N, std::vector<Z2>(N, Z2(0)));
+      for (int i = 0; i < dE; ++i)
+        for (int j = 0; j <= dV; ++j) S[i][i + j] = Z2(Z1(V_[dV - j]));
+      for (int i = 0; i < dV; ++i)
+        for (int j = 0; j <= dE; ++j) S[dE + i][i + j] = e[dE - j];
+      Z2 h = polynomial_matrix_determinant(S);  // Res_v(V, E)(r, u)
+      if (CGAL::is_zero(h)) continue;
+      Z2 hs = swap_uv(h), dummy = hs;  // inner u, outer r
+      const Z1 cont = remove_common_content(hs, dummy);
+      if (cont.degree() >= 1 && !isolate_real_roots(Z1(CGAL::gcd(cont, U_)), Rational(0), Rational(1)).empty())
+        continue;  // a root u0 of U in [0,1] where E vanishes for all r: try another combination
+      h = swap_uv(hs);  // inner r, outer u
+      Z1 R;
+      if (h.degree() < 1)
+        R = h[0];
+      else {
+        std::vector<Z1> uc;
+        for (int i = 0; i <= U_.degree(); ++i) uc.push_back(Z1(U_[i]));
+        R = outer_resultant(Z2(uc.begin(), uc.end()), h);
+      }
+      if (!CGAL::is_zero(R)) return R;
+    }
+    throw Error("intersect_curve_patch: patch with base points: no combination gives a usable eliminant R(r) "
+                "(degenerate input); not supported");
   }
 
   // ------------------------------------------------------------------ the curve lies on the implicit surface
@@ -987,6 +1164,7 @@ class Curve_patch_engine {
   bool have_eliminants_ = false;
   Z1 U_, V_;
   std::array<std::vector<Isolated_root>, 2> eliminant_roots_;
+  std::array<Z1, 2> removed_lines_{Z1(1), Z1(1)};
 };
 
 }  // namespace cs

@@ -186,8 +186,28 @@ TEST_CASE("Whitney umbrella: a segment through the pinch point", "[curve_patch][
   CHECK(res.points[0].kind == Curve_patch_intersection_kind::tangent);
 }
 
-TEST_CASE("a patch with a base point at infinity is a clear Error", "[curve_patch][fibres]") {
-  CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, plain_fold(Q(1, 4))), Error);
+TEST_CASE("patches with base points: the plain fold and the Whitney umbrella", "[curve_patch][fibres]") {
+  // det M == 0 identically: every root of R(r) = Res_u(U, Res_v(V, E) / content) goes through the grid step
+  for (const Q& c : {Q(1, 4), Q(1, 2)}) {
+    const auto res = intersect_segment_patch({Q(-1), Q(1, 2), Q(1)}, {Q(1), Q(1, 2), Q(-1)}, plain_fold(c));
+    REQUIRE(res.points.size() == 2);  // z = -x, y = 1/2 on the plain fold: x (s/2 + 1) = 0, so x = 0, s = +-sqrt(c)
+    const Integer cd = c.denominator(), cn = c.numerator();
+    const Z1 f(Integer(cd - cn), Integer(-4 * cd), Integer(4 * cd));
+    CHECK(has(res, Q(1, 2), alg(f, Q(0), Q(1, 2)), Q(1, 2)));
+    CHECK(has(res, Q(1, 2), alg(f, Q(1, 2), Q(1)), Q(1, 2)));
+    for (const auto& p : res.points) CHECK(p.multiplicity == 1);
+  }
+  // (s v', s, v'^2): x = y = z = 2r - 1 gives s v' = s = v'^2: the pinch point s = v' = 0 (r = 1/2, singular:
+  // exact tangent) and s = v' = 1 (r = 1, u = v = 1)
+  const Q1 s = lin(-1, 2);
+  const Patch W = Patch::from_power_form({in_u(Q1(1)), Q2(-s, Q1(2) * s), in_u(s), Q2(Q1(1), Q1(-4), Q1(4))});
+  const auto res = intersect_segment_patch({Q(-1), Q(-1), Q(-1)}, {Q(1), Q(1), Q(1)}, W);
+  REQUIRE(res.points.size() == 2);
+  CHECK(has(res, Q(1, 2), Q(1, 2), Q(1, 2)));
+  CHECK(has(res, Q(1), Q(1), Q(1)));
+  CHECK(res.points[0].tangent);
+  CHECK(res.points[0].multiplicity == 0);
+  CHECK(res.points[1].kind == Curve_patch_intersection_kind::endpoint);
 }
 
 namespace {
@@ -298,17 +318,54 @@ TEST_CASE("fold: random segments through the double line", "[curve_patch][fibres
       }
 }
 
-TEST_CASE("collapsed edge: a clear Error (the patch has base points)", "[curve_patch][fibres]") {
-  // (u, u v, u v^2): the edge u = 0 collapses to the origin; as a polynomial patch of bi-degree (1,2) it has the base
-  // point (u, v) = (0, oo), so the implicit matrix is singular: Error, not a wrong answer.
+TEST_CASE("collapsed edge: the cone (u, uv, uv^2) and its apex", "[curve_patch][fibres]") {
+  // the edge u = 0 collapses to the origin (base point (u, v) = (0, oo)); the image is the cone y^2 = x z
   const Patch P =
       Patch::from_power_form({in_u(Q1(1)), in_u(lin(0, 1)), v_times(lin(0, 1)), Q2(Q1(0), Q1(0), lin(0, 1))});
-  CHECK_THROWS_AS(intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P), Error);
-  try {
-    intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P);
-  } catch (const Error& e) {
-    CHECK(std::string(e.what()).find("the edge u = 0 collapses to the point (0, 0, 0)") != std::string::npos);
-  }
+  // t (1, 1/2, 1/3): y^2 = t^2/4 = x z = t^2/3 only at t = 0: the apex, whose preimage is the whole edge u = 0
+  auto res = intersect_segment_patch({Q(-1), Q(-1, 2), Q(-1, 3)}, {Q(1), Q(1, 2), Q(1, 3)}, P);
+  REQUIRE(res.points.size() == 1);
+  CHECK(res.points[0].r == Algebraic_real(Q(1, 2)));
+  CHECK(res.points[0].u == Algebraic_real(0));
+  CHECK(res.points[0].collapsed_line == 0);
+  CHECK(res.points[0].multiplicity == 0);
+  CHECK(res.points[0].kind == Curve_patch_intersection_kind::boundary);
+  // x = 1/2, z = 1/4, y = r: y^2 = 1/8 at r = 1/sqrt(8), u = 1/2, v = y/u = 1/sqrt(2)
+  res = intersect_segment_patch({Q(1, 2), Q(0), Q(1, 4)}, {Q(1, 2), Q(1), Q(1, 4)}, P);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, alg(Z1(Integer(-1), Integer(0), Integer(8)), Q(0), Q(1)), Q(1, 2),
+            alg(Z1(Integer(-1), Integer(0), Integer(2)), Q(0), Q(1))));
+  CHECK(res.points[0].collapsed_line == -1);
+  CHECK(res.points[0].multiplicity == 1);
+  // a ruling of the cone: the curve runs along the patch (a line of it maps into the segment): clear Error
+  CHECK_THROWS_AS(intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(1), Q(1, 2), Q(1, 4)}, P), Error);
+}
+
+TEST_CASE("rational sphere octant with a collapsed edge at the pole", "[curve_patch][fibres]") {
+  // ((1-v^2)(1-u^2), 2u (1-v^2), 2v (1+u^2)) / ((1+u^2)(1+v^2)): the edge v = 1 collapses to the north pole;
+  // base points (u, v) = (+-i, +-1)
+  const Q1 a(Q(1), Q(0), Q(-1)), b(Q(1), Q(0), Q(1)), t2(Q(0), Q(2));
+  const Patch S = Patch::from_power_form({Q2(b, Q1(0), b), Q2(a, Q1(0), -a), Q2(t2, Q1(0), -t2), Q2(Q1(0), Q1(2) * b)});
+  REQUIRE(S(Q(1, 3), Q(1)) == P3{Q(0), Q(0), Q(1)});
+  const P3 q = S(Q(3, 5), Q(1, 2));
+  REQUIRE(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] == Q(1));  // on the unit sphere
+  // the z-axis meets the octant only at the pole: preimage the whole edge v = 1
+  auto res = intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(0), Q(0), Q(2)}, S);
+  REQUIRE(res.points.size() == 1);
+  CHECK(res.points[0].r == Algebraic_real(Q(1, 2)));
+  CHECK(res.points[0].v == Algebraic_real(1));
+  CHECK(res.points[0].collapsed_line == 1);
+  // the diagonal meets it at (1,1,1)/sqrt(3): r = 1/sqrt(3), u = tan(pi/8) = sqrt(2) - 1, v = sqrt(3) - sqrt(2)
+  res = intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)}, S);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, alg(Z1(Integer(-1), Integer(0), Integer(3)), Q(0), Q(1)),
+            alg(Z1(Integer(-1), Integer(2), Integer(1)), Q(0), Q(1)),
+            alg(Z1(Integer(1), Integer(0), Integer(-10), Integer(0), Integer(1)), Q(0), Q(1, 2))));
+  CHECK(res.points[0].multiplicity == 1);
+  // a segment through the octant's point q = S(3/5, 1/2) at r = 1/3
+  res = intersect_segment_patch({q[0] - Q(1, 3), q[1] + Q(1, 6), q[2] - Q(1, 9)},
+                                {q[0] + Q(2, 3), q[1] - Q(1, 3), q[2] + Q(2, 9)}, S);
+  CHECK(has(res, Q(1, 3), Q(3, 5), Q(1, 2)));
 }
 
 TEST_CASE("fold: a segment running along the double line", "[curve_patch][fibres]") {
