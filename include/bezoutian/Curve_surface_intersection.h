@@ -1011,6 +1011,9 @@ class Curve_patch_engine {
 
   Z1 base_point_r_eliminant() const {
     if (U_.degree() < 1 || V_.degree() < 1) return Z1(1);  // no u or no v candidates: no isolated intersection
+    // square-free parts: the same roots, smaller resultants
+    const Z1 U = typename CGAL::Polynomial_traits_d<Z1>::Make_square_free()(U_);
+    const Z1 V = typename CGAL::Polynomial_traits_d<Z1>::Make_square_free()(V_);
     const auto Phi = dense_patch_form();
     const int combos[3][3] = {{1, 2, 3}, {3, -1, 2}, {-2, 5, 1}};
     for (const auto& c : combos) {
@@ -1033,18 +1036,18 @@ class Curve_patch_engine {
       }
       while (!e.empty() && CGAL::is_zero(e.back())) e.pop_back();
       if (e.size() < 2) continue;  // E does not depend on v: try another combination
-      const int dE = int(e.size()) - 1, dV = V_.degree();
+      const int dE = int(e.size()) - 1, dV = V.degree();
       const std::size_t N = std::size_t(dE + dV);
       std::vector<std::vector<Z2>> S(N, std::vector<Z2>(N, Z2(0)));
       for (int i = 0; i < dE; ++i)
-        for (int j = 0; j <= dV; ++j) S[i][i + j] = Z2(Z1(V_[dV - j]));
+        for (int j = 0; j <= dV; ++j) S[i][i + j] = Z2(Z1(V[dV - j]));
       for (int i = 0; i < dV; ++i)
         for (int j = 0; j <= dE; ++j) S[dE + i][i + j] = e[dE - j];
       Z2 h = polynomial_matrix_determinant(S);  // Res_v(V, E)(r, u)
       if (CGAL::is_zero(h)) continue;
       Z2 hs = swap_uv(h), dummy = hs;  // inner u, outer r
       const Z1 cont = remove_common_content(hs, dummy);
-      if (cont.degree() >= 1 && !isolate_real_roots(Z1(CGAL::gcd(cont, U_)), Rational(0), Rational(1)).empty())
+      if (cont.degree() >= 1 && !isolate_real_roots(Z1(CGAL::gcd(cont, U)), Rational(0), Rational(1)).empty())
         continue;  // a root u0 of U in [0,1] where E vanishes for all r: try another combination
       h = swap_uv(hs);  // inner r, outer u
       Z1 R;
@@ -1052,7 +1055,7 @@ class Curve_patch_engine {
         R = h[0];
       else {
         std::vector<Z1> uc;
-        for (int i = 0; i <= U_.degree(); ++i) uc.push_back(Z1(U_[i]));
+        for (int i = 0; i <= U.degree(); ++i) uc.push_back(Z1(U[i]));
         R = outer_resultant(Z2(uc.begin(), uc.end()), h);
       }
       if (!CGAL::is_zero(R)) return R;
