@@ -1017,20 +1017,20 @@ class Curve_patch_engine {
     const auto Phi = dense_patch_form();
     const int combos[3][3] = {{1, 2, 3}, {3, -1, 2}, {-2, 5, 1}};
     for (const auto& c : combos) {
-      // E = sum_k c_k (X_k Phi_0 - W Phi_k): v-coefficients e_j(r, u), inner variable r, outer u
+      // E = Phi_0(u,v) lambda - M(u,v), M = sum_k c_k Phi_k: v-coefficients e_j(lambda, u), inner variable lambda
       const int n = patch_.degree_v();
       std::vector<Z2> e;
       for (int j = 0; j <= n; ++j) {
-        std::vector<Z1> cu;
+        auto co = [&](int k, int i) {
+          return j <= Phi[k].degree() && i <= Phi[k][j].degree() ? Phi[k][j][i] : Integer(0);
+        };
         int du = 0;
         for (int k = 0; k < 4; ++k) du = std::max(du, j <= Phi[k].degree() ? Phi[k][j].degree() : 0);
+        std::vector<Z1> cu;
         for (int i = 0; i <= du; ++i) {
-          Z1 t(0);
-          for (int k = 1; k <= 3; ++k) {
-            auto co = [&](int kk) { return j <= Phi[kk].degree() && i <= Phi[kk][j].degree() ? Phi[kk][j][i] : Integer(0); };
-            t += Z1(Integer(c[k - 1])) * (H_[k] * Z1(co(0)) - H_[0] * Z1(co(k)));
-          }
-          cu.push_back(t);
+          Integer m(0);
+          for (int k = 1; k <= 3; ++k) m += Integer(c[k - 1]) * co(k, i);
+          cu.push_back(Z1(Integer(-m), co(0, i)));
         }
         e.push_back(Z2(cu.begin(), cu.end()));
       }
@@ -1043,22 +1043,36 @@ class Curve_patch_engine {
         for (int j = 0; j <= dV; ++j) S[i][i + j] = Z2(Z1(V[dV - j]));
       for (int i = 0; i < dV; ++i)
         for (int j = 0; j <= dE; ++j) S[dE + i][i + j] = e[dE - j];
-      Z2 h = polynomial_matrix_determinant(S);  // Res_v(V, E)(r, u)
+      Z2 h = polynomial_matrix_determinant(S);  // Res_v(V, E)(lambda, u)
+      CS_TICK("bp: Res_v");
       if (CGAL::is_zero(h)) continue;
-      Z2 hs = swap_uv(h), dummy = hs;  // inner u, outer r
+      Z2 hs = swap_uv(h), dummy = hs;  // inner u, outer lambda
       const Z1 cont = remove_common_content(hs, dummy);
       if (cont.degree() >= 1 && !isolate_real_roots(Z1(CGAL::gcd(cont, U)), Rational(0), Rational(1)).empty())
-        continue;  // a root u0 of U in [0,1] where E vanishes for all r: try another combination
-      h = swap_uv(hs);  // inner r, outer u
-      Z1 R;
+        continue;  // a root u0 of U in [0,1] where E vanishes for all lambda: try another combination
+      h = swap_uv(hs);  // inner lambda, outer u
+      Z1 Nl;
       if (h.degree() < 1)
-        R = h[0];
+        Nl = h[0];
       else {
         std::vector<Z1> uc;
         for (int i = 0; i <= U.degree(); ++i) uc.push_back(Z1(U[i]));
-        R = outer_resultant(Z2(uc.begin(), uc.end()), h);
+        Nl = outer_resultant(Z2(uc.begin(), uc.end()), h);
       }
-      if (!CGAL::is_zero(R)) return R;
+      CS_TICK("bp: Res_u");
+      if (CGAL::is_zero(Nl)) continue;
+      // R(r) = W^D N(L/W), L = sum_k c_k X_k, D = deg N: N(lambda0) = 0 at lambda0 = L/W (C(r0)) of an intersection
+      const Z1 L = H_[1] * Z1(Integer(c[0])) + H_[2] * Z1(Integer(c[1])) + H_[3] * Z1(Integer(c[2]));
+      const int D = Nl.degree();
+      std::vector<Z1> Lp{Z1(1)}, Wp{Z1(1)};
+      for (int i = 1; i <= D; ++i) {
+        Lp.push_back(Lp.back() * L);
+        Wp.push_back(Wp.back() * H_[0]);
+      }
+      Z1 R(0);
+      for (int i = 0; i <= D; ++i)
+        if (!CGAL::is_zero(Nl[i])) R += Z1(Nl[i]) * Lp[i] * Wp[D - i];
+      if (!CGAL::is_zero(R)) return R;  // zero: the curve lies in a plane L/W = const, a root of N
     }
     throw Error("intersect_curve_patch: patch with base points: no combination gives a usable eliminant R(r) "
                 "(degenerate input); not supported");

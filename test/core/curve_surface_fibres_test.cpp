@@ -478,3 +478,44 @@ TEST_CASE("constant curve and a patch with base points: Error, not a kernel answ
   const Rational_bezier_curve_3<Q> on({P3{Q(0), Q(1, 2), Q(0)}, P3{Q(0), Q(1, 2), Q(0)}});
   CHECK_THROWS_AS(intersect_curve_patch(on, plain_fold(Q(1, 4))), Error);
 }
+
+TEST_CASE("sphere octant (base points): random segments, checked against the sphere equation",
+          "[curve_patch][fibres]") {
+  // segments through S(u0, v0) at r = 1/3 in a random direction; independent answer: the roots r in [0,1] of
+  // |C(r)|^2 - 1 (exact isolation) where C(r) lies in the open octant (the octant patch covers it once)
+  const Q1 a(Q(1), Q(0), Q(-1)), b(Q(1), Q(0), Q(1)), t2(Q(0), Q(2));
+  const Patch S = Patch::from_power_form({Q2(b, Q1(0), b), Q2(a, Q1(0), -a), Q2(t2, Q1(0), -t2), Q2(Q1(0), Q1(2) * b)});
+  std::mt19937 g(7);
+  auto rnd = [&g](int range, int den) { return Q(int(g() % unsigned(2 * range + 1)) - range, den); };
+  int total = 0;
+  for (int trial = 0; trial < 8; ++trial) {
+    const Q u0(int(g() % 9) + 1, 10), v0(int(g() % 9) + 1, 10);
+    const P3 q = S(u0, v0), d{rnd(6, 4), rnd(6, 4), rnd(6, 4)};
+    const P3 A{q[0] - d[0] / 3, q[1] - d[1] / 3, q[2] - d[2] / 3}, B{A[0] + d[0], A[1] + d[1], A[2] + d[2]};
+    Q1 f(-1);
+    for (int k = 0; k < 3; ++k) f += Q1(A[k], B[k] - A[k]) * Q1(A[k], B[k] - A[k]);
+    std::vector<Algebraic_real> expected;
+    bool ambiguous = false;
+    for (const auto& root : isolate_real_roots(f, Q(0), Q(1))) {
+      const double r = root.root.to_double();
+      double x[3];
+      for (int k = 0; k < 3; ++k) x[k] = CGAL::to_double(A[k]) + r * CGAL::to_double(B[k] - A[k]);
+      if (std::min({std::abs(x[0]), std::abs(x[1]), std::abs(x[2])}) < 1e-6) ambiguous = true;
+      if (x[0] > 0 && x[1] > 0 && x[2] > 0) expected.push_back(root.root);
+    }
+    if (ambiguous) continue;
+    const auto res = intersect_segment_patch(A, B, S);
+    REQUIRE(res.points.size() == expected.size());
+    CHECK(has(res, Q(1, 3), u0, v0));
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      CHECK(res.points[i].r == expected[i]);
+      CHECK(res.points[i].multiplicity == 1);
+      const auto x = S.evaluate(res.points[i].u.to_double(), res.points[i].v.to_double());
+      const double r = res.points[i].r.to_double();
+      for (int k = 0; k < 3; ++k)
+        CHECK(std::abs(x[k] - CGAL::to_double(A[k]) - r * CGAL::to_double(B[k] - A[k])) < 1e-12);
+    }
+    total += int(expected.size());
+  }
+  CHECK(total >= 8);
+}
