@@ -939,15 +939,19 @@ class Curve_patch_engine {
 
   // ------------------------------------------------------------------ patches with base points
   // det M(w,x) == 0 identically (base points, e.g. at infinity or from a collapsed edge): no eliminant from the
-  // implicit matrix and no kernel inversion. Instead every intersection parameter is a root of
-  //   R(r) = Res_u(U(u), h(r,u) / cont_u h),  h(r,u) = Res_v(V(v), E(r,u,v)),  E = sum_k c_k E_k,
-  // E_k = X_k(r) Phi_0(u,v) - W(r) Phi_k(u,v): h(r0,u0) = 0 at an intersection (V(v0) = 0, E(r0,u0,v0) = 0), and
-  // removing the content cont_u h (its roots u1 are the u of pairs (u1, v1), V(v1) = 0, where E vanishes for all r:
-  // affine base points) keeps that zero unless cont_u h(u0) = 0, which is excluded by an exact check (no common
-  // root of cont_u h and U in [0,1], else the next combination c, else Error). R != 0: h / cont_u h is primitive,
-  // so it does not vanish identically at any root of U. Every root of R in [0,1] is then decided by the grid step.
-  // Collapsed lines (an iso-line u = u0 mapped to one point P, removed from g_ab, g_ac by compute_eliminants) are
-  // reported separately, at the exact roots of gcd_k (X_k - P_k W).
+  // implicit matrix and no kernel inversion. Instead, with M = sum_k c_k Phi_k and L = sum_k c_k X_k, every
+  // intersection parameter is a root of
+  //   R(r) = W(r)^D N(L(r)/W(r)),  N(lambda) = Res_u(U(u), h / cont_u h),  h(lambda, u) = Res_v(V(v), E),
+  //   E(lambda, u, v) = Phi_0(u,v) lambda - M(u,v)   (D = deg N; U, V square-free):
+  // at an intersection lambda0 = L/W(r0) = M/Phi_0(u0,v0), so E(lambda0, u0, v0) = 0, V(v0) = 0 give h(lambda0, u0)
+  // = 0, U(u0) = 0 gives N(lambda0) = 0. Removing the content cont_u h (its roots u1 are the u of pairs (u1, v1),
+  // V(v1) = 0, where E vanishes for all lambda: affine base points) keeps that zero unless cont_u h(u0) = 0, which
+  // is excluded by an exact check (no common root of cont_u h and U in [0,1], else the next combination c, else
+  // Error). N != 0: h / cont_u h is primitive, so it vanishes identically at no root of U; R == 0 only if L/W is a
+  // constant root of N (a planar curve): next c. Every root of R in [0,1] is then decided by the grid step (its
+  // proofs only need R, U, V to vanish at every intersection). Collapsed lines (an iso-line u = u0 mapped to one
+  // point P, removed from g_ab, g_ac by compute_eliminants) are reported once, at the exact roots of
+  // gcd_k (X_k - P_k W), with collapsed_line set; the grid step skips their points at those r.
   void base_point_case(Curve_patch_intersection_result& res) {
     compute_eliminants(true);
     std::vector<std::pair<Algebraic_real, std::pair<int, Rational>>> hits;  // r, (direction, value of the line)
@@ -1198,11 +1202,14 @@ class Curve_patch_engine {
 /// patch covering its image several times, or a singular point of the surface), the grid step reports every
 /// preimage (u,v) in [0,1]^2: the candidates are the roots of the eliminants U(u), V(v), each excluded by interval
 /// arithmetic or proved by a Krawczyk test in (r,u,v) (exact decision when r, u, v are rational).
+/// Patches with base points (det M == 0, e.g. collapsed edges of rational sphere patches, or polynomial patches with
+/// base points at infinity): every root of an eliminant built from U, V (see base_point_case) goes through the
+/// grid step; a collapsed edge through which the curve passes is reported once, with collapsed_line set.
 /// Requirements: no pole of the curve on [0,1] or of the patch on [0,1]^2 (Invalid_input), bi-degree >= (1,1)
-/// (Invalid_input). Error (not supported) when such a preimage is a singular solution with an irrational
-/// coordinate (the curve tangent to one sheet of a self-intersection, or a singular point of the surface, at an
-/// irrational parameter), when the patch has base points (this includes collapsed edges, e.g. (u, uv, uv^2)), or
-/// when no projection gives nonzero eliminants U, V. A constant curve gives the overlap [0,1] if its point is on
+/// (Invalid_input). Error (not supported) when such a preimage is a singular solution with two or three irrational
+/// coordinates (the curve tangent to one sheet of a self-intersection, or through a singular point of the surface,
+/// at irrational parameters), when the curve runs along a patch with base points (or a constant curve meets one),
+/// or when no projection gives nonzero eliminants U, V. A constant curve gives the overlap [0,1] if its point is on
 /// the patch, nothing otherwise.
 inline Curve_patch_intersection_result intersect_curve_patch(const Rational_bezier_curve<Rational, 3>& curve,
                                                               const Rational_bezier_patch<Rational>& patch) {
