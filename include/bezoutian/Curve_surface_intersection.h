@@ -953,7 +953,12 @@ class Curve_patch_engine {
   // point P, removed from g_ab, g_ac by compute_eliminants) are reported once, at the exact roots of
   // gcd_k (X_k - P_k W), with collapsed_line set; the grid step skips their points at those r.
   void base_point_case(Curve_patch_intersection_result& res) {
-    compute_eliminants(true);
+    try {
+      compute_eliminants(true);
+    } catch (const Error& e) {
+      throw Error(std::string(e.what()) + "; the patch has base points (its implicit matrix is singular" +
+                  collapsed_edges() + "): the curve may lie on its surface, not supported");
+    }
     std::vector<std::pair<Algebraic_real, std::pair<int, Rational>>> hits;  // r, (direction, value of the line)
     for (int dir = 0; dir < 2; ++dir) {
       if (removed_lines_[dir].degree() < 1) continue;

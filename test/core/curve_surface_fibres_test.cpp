@@ -362,6 +362,8 @@ TEST_CASE("rational sphere octant with a collapsed edge at the pole", "[curve_pa
             alg(Z1(Integer(-1), Integer(2), Integer(1)), Q(0), Q(1)),
             alg(Z1(Integer(1), Integer(0), Integer(-10), Integer(0), Integer(1)), Q(0), Q(1, 2))));
   CHECK(res.points[0].multiplicity == 1);
+  // the equator quarter (1 - r^2, 2r, 0)/(1 + r^2) is the edge v = 0: the curve lies on a patch with base points
+  CHECK_THROWS_AS(intersect_curve_patch(Rational_bezier_curve_3<Q>::from_power_form({b, a, t2, Q1(0)}), S), Error);
   // a segment through the octant's point q = S(3/5, 1/2) at r = 1/3
   res = intersect_segment_patch({q[0] - Q(1, 3), q[1] + Q(1, 6), q[2] - Q(1, 9)},
                                 {q[0] + Q(2, 3), q[1] - Q(1, 3), q[2] + Q(2, 9)}, S);
