@@ -656,32 +656,14 @@ class Curve_patch_engine {
   // gives base points: Phi_k = P_k Phi_0 on the edge, and Phi_0 restricted to it has (complex) roots. Named in the
   // error message.
   std::string collapsed_edges() const {
-    const auto Phi = dense_patch_form();
     const char* names[4] = {"v = 0", "u = 1", "v = 1", "u = 0"};
+    const int dir[4] = {1, 0, 1, 0}, at[4] = {0, 1, 1, 0};
     std::string out;
     for (int side = 0; side < 4; ++side) {
-      std::array<Q1, 4> e;
-      for (int k = 0; k < 4; ++k) {
-        const Z2& f = Phi[k];
-        std::vector<Rational> c;
-        if (side == 0 || side == 2) {  // polynomial in u at v = 0 or 1
-          Z1 g = side == 0 ? f[0] : Z1(0);
-          if (side == 2)
-            for (int j = 0; j <= f.degree(); ++j) g += f[j];
-          e[k] = to_q(g);
-        } else {  // polynomial in v at u = 1 or 0
-          for (int j = 0; j <= f.degree(); ++j) c.push_back(value_at(f[j], Rational(side == 1 ? 1 : 0)));
-          e[k] = Q1(c.begin(), c.end());
-        }
-      }
-      if (CGAL::is_zero(e[0])) continue;
-      int i0 = 0;
-      while (CGAL::is_zero(e[0][i0])) ++i0;
-      bool collapsed = true;
-      for (int k = 1; k < 4; ++k) collapsed = collapsed && e[k] * Q1(e[0][i0]) == e[0] * Q1(e[k][i0]);
-      if (collapsed)
-        out += "; the edge " + std::string(names[side]) + " collapses to the point (" + str(e[1][i0] / e[0][i0]) +
-               ", " + str(e[2][i0] / e[0][i0]) + ", " + str(e[3][i0] / e[0][i0]) + ")";
+      Rational p0, p[3];
+      if (collapsed_line(dir[side], Rational(at[side]), p0, p))
+        out += "; the edge " + std::string(names[side]) + " collapses to the point (" + str(p[0]) + ", " + str(p[1]) +
+               ", " + str(p[2]) + ")";
     }
     return out;
   }

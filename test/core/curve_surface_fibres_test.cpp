@@ -337,6 +337,13 @@ TEST_CASE("collapsed edge: the cone (u, uv, uv^2) and its apex", "[curve_patch][
             alg(Z1(Integer(-1), Integer(0), Integer(2)), Q(0), Q(1))));
   CHECK(res.points[0].collapsed_line == -1);
   CHECK(res.points[0].multiplicity == 1);
+  // a constant curve: Error naming the collapsed edge
+  try {
+    intersect_curve_patch(Rational_bezier_curve_3<Q>({P3{Q(1), Q(1), Q(1)}, P3{Q(1), Q(1), Q(1)}}), P);
+    FAIL("expected an Error");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).find("the edge u = 0 collapses to the point (0, 0, 0)") != std::string::npos);
+  }
   // a ruling of the cone: the curve runs along the patch (a line of it maps into the segment): clear Error
   CHECK_THROWS_AS(intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(1), Q(1, 2), Q(1, 4)}, P), Error);
 }
