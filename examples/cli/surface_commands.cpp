@@ -99,11 +99,17 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   for (const auto& v : T.vertices) {
     json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
                {"branches", v.branches}};
-    if (v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated) {
+    // a contact with the domain edge from outside is an isolated point of the locus in the domain, but D = 0 is
+    // smooth there: a boundary point, not a singular one
+    if ((v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated) &&
+        !v.tangent_to_boundary) {
       jv["isolated"] = v.kind == bezoutian::Curve_topology_vertex::isolated;
       sing.push_back(jv);
     }
-    if (v.on_boundary) bnd.push_back(jv);
+    if (v.on_boundary) {
+      jv["tangent_to_boundary"] = v.tangent_to_boundary;  // the curve touches the edge here (from inside: 2 arcs)
+      bnd.push_back(jv);
+    }
   }
   j["singular_points"] = sing;
   j["boundary_points"] = bnd;
