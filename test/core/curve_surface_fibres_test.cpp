@@ -528,3 +528,18 @@ TEST_CASE("sphere octant (base points): random segments, checked against the sph
   }
   CHECK(total >= 8);
 }
+
+TEST_CASE("stereographic sphere patch (base points (u,v) with u^2 + v^2 = -1)", "[curve_patch][fibres]") {
+  // (2u, 2v, 1 - u^2 - v^2) / (1 + u^2 + v^2): the inverse is u = x/(1+z), v = y/(1+z). A ray from the centre in the
+  // direction d meets the unit sphere at d/|d|: d = (1, 1/2, 1/3), |d| = 7/6: r = 6/7, point (6, 3, 2)/7, (u, v) =
+  // (2/3, 1/3); d = (4/3, 4/3, 2/3), |d| = 2: r = 1/2, point (2, 2, 1)/3, (u, v) = (1/2, 1/2).
+  const Patch S = Patch::from_power_form({Q2(Q1(Q(1), Q(0), Q(1)), Q1(0), Q1(1)), in_u(lin(0, 2)), v_times(Q1(2)),
+                                          Q2(Q1(Q(1), Q(0), Q(-1)), Q1(0), Q1(-1))});
+  auto res = intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(1), Q(1, 2), Q(1, 3)}, S);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, Q(6, 7), Q(2, 3), Q(1, 3)));
+  CHECK(res.points[0].multiplicity == 1);
+  res = intersect_segment_patch({Q(0), Q(0), Q(0)}, {Q(4, 3), Q(4, 3), Q(2, 3)}, S);
+  REQUIRE(res.points.size() == 1);
+  CHECK(has(res, Q(1, 2), Q(1, 2), Q(1, 2)));
+}
