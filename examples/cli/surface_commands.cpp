@@ -70,7 +70,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     jc["closed"] = c.closed;
     jc["isolated_point"] = c.isolated_point;
     json pts = json::array(), partner = json::array(), p3 = json::array(), genuine = json::array(), arcs = json::array(),
-         proved = json::array();
+         proved = json::array(), enclosures = json::array();
     for (std::size_t ei : c.edges) {
       const auto& arc = L.arcs[ei];
       arcs.push_back({{"from", pts.size()}, {"count", arc.points.size()}, {"undecided_fraction", arc.undecided_fraction}});
@@ -80,6 +80,8 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
         p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
         genuine.push_back(q.genuine);
         proved.push_back(q.status_proved);
+        const auto& y = q.partner_enclosure;
+        enclosures.push_back(std::isfinite(y[0][0]) ? json{{y[0][0], y[0][1]}, {y[1][0], y[1][1]}} : json(nullptr));
       }
     }
     if (c.isolated_point && !c.vertices.empty()) {
@@ -92,6 +94,8 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     jc["points_3d"] = p3;
     jc["genuine"] = genuine;
     jc["genuine_proved"] = proved;  // the genuine flag above is proved (true) or floating point only (false)
+    // proved genuine points: a box in partner coordinates proved to hold the partner of the exact arc point
+    jc["partner_enclosures"] = enclosures;
     comps.push_back(jc);
   }
   j["components"] = comps;

@@ -70,6 +70,13 @@ struct Locus_point {
   /// in the partner domain (parametric Krawczyk), phantom by an exclusion of every partner
   /// (internal/certified_lifting.h). False: decided in floating point only.
   bool status_proved = false;
+  /// For a point proved genuine: a box {{y1_lo, y1_hi}, {y2_lo, y2_hi}} in the coordinates of `partner` ((l, k) or
+  /// (v, s)) proved to contain a partner, inside the partner domain, of the exact point of D = 0 that this traced
+  /// point approximates (the point of the exact arc with the same graph coordinate; parametric Krawczyk over the
+  /// span, internal/certified_lifting.h). NaN otherwise. `partner` itself is a floating-point approximation.
+  std::array<std::array<double, 2>, 2> partner_enclosure{
+      {{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()},
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}}};
 };
 
 /// One arc of D = 0 inside the box, traced.
@@ -369,6 +376,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
         }
         q.status_proved = true;
         q.genuine = c.point_status[i] == Partner_status::genuine;
+        if (q.genuine) q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
       }
   }
 }

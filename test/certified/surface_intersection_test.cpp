@@ -384,7 +384,7 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
   const Surface_locus L = self_intersection_locus(phi);
   REQUIRE(L.topology_computed);
   REQUIRE(L.topology_method == "subdivision");
-  std::size_t on_line = 0, on_line_proved = 0, genuine_proved = 0, phantom_proved = 0;
+  std::size_t on_line = 0, on_line_proved = 0, genuine_proved = 0, phantom_proved = 0, tight = 0;
   for (const auto& arc : L.arcs)
     for (const auto& q : arc.points) {
       const double u = q.projection[0], v = q.projection[1];
@@ -395,7 +395,15 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
         CHECK(u <= 0.6 + 1e-9);
         CHECK(q.partner[0] == Approx(0.6 - 2 * u).margin(1e-6));  // (l, k): Q = (u + l, v), P = (u, v + k)
         CHECK(q.partner[1] == Approx(0).margin(1e-6));
+        // the proved enclosure holds the exact partner of the arc point (u, 1/3) (u is the exact graph coordinate)
+        const auto& y = q.partner_enclosure;
+        CHECK(y[0][0] <= 0.6 - 2 * u + 1e-15);
+        CHECK(0.6 - 2 * u - 1e-15 <= y[0][1]);
+        CHECK(y[1][0] <= 0);
+        CHECK(0 <= y[1][1]);
+        tight += y[0][1] - y[0][0] < 1e-6 && y[1][1] - y[1][0] < 1e-6;
       }
+      if (!(q.status_proved && q.genuine)) CHECK(std::isnan(q.partner_enclosure[0][0]));
       if (q.status_proved && !q.genuine) {
         ++phantom_proved;
         CHECK((!line || u >= 0.6 - 1e-9));
@@ -409,6 +417,8 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
   CHECK(on_line_proved == on_line);  // the whole segment, both sides of the transition, is decided by proofs
   CHECK(genuine_proved > 10);
   CHECK(phantom_proved > 5);
+  // enclosures are tightened at the points of graph pieces (the half-branches at the pinch keep the span's)
+  CHECK(tight >= 0.8 * double(genuine_proved));
 }
 
 // Regression: on this random bicubic pair (the first (3,3) polynomial pair of benchmark/surface_benchmark.cpp, D of

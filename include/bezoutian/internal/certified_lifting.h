@@ -265,6 +265,28 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   return status_from_partner(eq, domain, unbounded, axis, T, K, start(), false, budget);
 }
 
+/// A tight enclosure of the partner at one value t of the graph coordinate. K is a box in which the zero curve is
+/// unique for each t of `span` (a strict parametric Krawczyk test); a Krawczyk test with t fixed, on a
+/// small box around `guess` (other coordinate, y1, y2) inside K, encloses the same zero tightly. Returns `y`
+/// (the span's enclosure) if it fails.
+inline std::array<Double_interval, 2> tight_partner_enclosure(const Partner_equations& eq, int axis,
+                                                              const Double_interval& t, const Double_interval& span,
+                                                              const double (&guess)[3],
+                                                              const std::array<Double_interval, 3>& K,
+                                                              const std::array<Double_interval, 2>& y) {
+  using D = Double_interval;
+  if (!(span.lo <= t.lo && t.hi <= span.hi)) return y;  // uniqueness in K holds over the span only
+  std::array<D, 3> W;
+  for (int c = 0; c < 3; ++c) {
+    const double g = std::isfinite(guess[c]) ? guess[c] : K[c].mid();
+    const double r = 1e-8 * (1 + std::fabs(g)) + (t.hi - t.lo);
+    W[c] = D{std::max(g - r, K[c].lo), std::min(g + r, K[c].hi)};
+    if (!(W[c].lo < W[c].hi)) return y;
+  }
+  if (!parametric_partner_krawczyk(eq, axis, t, W, nullptr, true)) return y;
+  return {W[1], W[2]};
+}
+
 /// Result of certify_edge_partners: status per polyline point and the undecided fraction of the edge.
 struct Edge_partner_certificate {
   std::vector<Partner_status> point_status;  ///< per polyline point (undecided if not proved)
@@ -330,6 +352,18 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
       return D{e.polyline[i][c], e.polyline[i][c]};
     };
+    // The enclosure y of a genuine partner holds over the whole span (K: the span's box, where the zero curve is
+    // unique for each value of the graph coordinate). At the polyline point itself a Krawczyk test with the graph
+    // coordinate fixed, on a small box around the floating-point values inside K, encloses the same zero tightly;
+    // if it fails the span's enclosure is kept.
+    auto tight = [&](std::size_t i, Partner_status st, const std::array<D, 2>& y, const std::array<D, 3>& K,
+                     const D& span) {
+      if (st != Partner_status::genuine) return y;
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const double guess[3] = {e.polyline[i][other], partner_known[i] ? partner[i][0] : nan,
+                               partner_known[i] ? partner[i][1] : nan};
+      return tight_partner_enclosure(eq, axis, coord(i, axis), span, guess, K, y);
+    };
     // The partner pieces that survive the exclusion on the whole cell cover every candidate partner of its points:
     // the phantom proofs of the spans start from them (computed once, on first demand). If the whole cell is
     // excluded, start() returns an empty cover and every phantom proof is immediate.
@@ -394,6 +428,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       std::vector<Span> stack{{T, 0}};
       Partner_status left = Partner_status::undecided, right = Partner_status::undecided;
       std::array<D, 2> left_y = none, right_y = none;
+      std::array<D, 3> left_K{}, right_K{};
+      D left_T{}, right_T{};
       while (!stack.empty()) {
         const Span s = stack.back();
         stack.pop_back();
@@ -420,15 +456,17 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
           continue;
         }
         if (st == Partner_status::undecided) undecided += s.T.hi - s.T.lo;
-        if (s.T.lo <= T.lo) left = st, left_y = y;
-        if (s.T.hi >= T.hi) right = st, right_y = y;
+        if (s.T.lo <= T.lo) left = st, left_y = y, left_K = K, left_T = s.T;
+        if (s.T.hi >= T.hi) right = st, right_y = y, right_K = K, right_T = s.T;
       }
       if (left == Partner_status::outside) continue;  // pending in the run
       flush();
       // the polyline may run either way along the graph coordinate
       const bool increasing = a.mid() <= b.mid();
-      merge(i, increasing ? left : right, increasing ? left_y : right_y);
-      merge(i + 1, increasing ? right : left, increasing ? right_y : left_y);
+      merge(i, increasing ? left : right, tight(i, increasing ? left : right, increasing ? left_y : right_y,
+                                                increasing ? left_K : right_K, increasing ? left_T : right_T));
+      merge(i + 1, increasing ? right : left, tight(i + 1, increasing ? right : left, increasing ? right_y : left_y,
+                                                    increasing ? right_K : left_K, increasing ? right_T : left_T));
     }
     flush();
   }
@@ -515,7 +553,12 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       if (k == j + 1 && !span_end) continue;
       if (k == j && !(at_c || sp.depth == 0 || (dir > 0 ? T.lo <= a0.mid() : T.hi >= a0.mid()))) continue;
       if (out.point_status[idx[k]] == Partner_status::undecided) out.point_status[idx[k]] = st;
-      if (st == Partner_status::genuine) out.partner_enclosure[idx[k]] = {K[1], K[2]};
+      if (st == Partner_status::genuine) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const double guess[3] = {e.polyline[idx[k]][1 - axis], known[idx[k]] ? partner[idx[k]][0] : nan,
+                                 known[idx[k]] ? partner[idx[k]][1] : nan};
+        out.partner_enclosure[idx[k]] = tight_partner_enclosure(eq, axis, t_at(k), T, guess, W, {K[1], K[2]});
+      }
     }
     covered = std::fabs(t_done - tc.mid());
   }
