@@ -277,14 +277,28 @@ inline std::array<Double_interval, 2> tight_partner_enclosure(const Partner_equa
   using D = Double_interval;
   if (!(span.lo <= t.lo && t.hi <= span.hi)) return y;  // uniqueness in K holds over the span only
   std::array<D, 3> W;
-  for (int c = 0; c < 3; ++c) {
+  bool near = true;
+  for (int c = 0; c < 3 && near; ++c) {
     const double g = std::isfinite(guess[c]) ? guess[c] : K[c].mid();
     const double r = 1e-8 * (1 + std::fabs(g)) + (t.hi - t.lo);
     W[c] = D{std::max(g - r, K[c].lo), std::min(g + r, K[c].hi)};
-    if (!(W[c].lo < W[c].hi)) return y;
+    near = W[c].lo < W[c].hi;
   }
-  if (!parametric_partner_krawczyk(eq, axis, t, W, nullptr, true)) return y;
-  return {W[1], W[2]};
+  if (near && parametric_partner_krawczyk(eq, axis, t, W, nullptr, true)) return {W[1], W[2]};
+  // no usable guess (e.g. the floating-point lifting followed another partner): contract K itself. Each success
+  // replaces W by its Krawczyk image, which holds the zero; the last image is kept.
+  W = K;
+  bool any = false;
+  for (int it = 0; it < 12; ++it) {
+    std::array<D, 3> next = W;
+    if (!parametric_partner_krawczyk(eq, axis, t, next, nullptr, true)) break;
+    any = true;
+    const bool shrinking = (next[1].hi - next[1].lo) + (next[2].hi - next[2].lo) < 0.5 * ((W[1].hi - W[1].lo) + (W[2].hi - W[2].lo));
+    W = next;
+    if (!shrinking) break;
+  }
+  if (!any) return y;
+  return {D{std::max(W[1].lo, y[0].lo), std::min(W[1].hi, y[0].hi)}, D{std::max(W[2].lo, y[1].lo), std::min(W[2].hi, y[1].hi)}};
 }
 
 /// Result of certify_edge_partners: status per polyline point and the undecided fraction of the edge.
