@@ -103,10 +103,10 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   for (const auto& v : T.vertices) {
     json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
                {"branches", v.branches}};
-    // a contact with the domain edge from outside is an isolated point of the locus in the domain, but D = 0 is
-    // smooth there: a boundary point, not a singular one
+    // a contact with the domain edge from outside (or a domain corner that D = 0 passes from outside) is an
+    // isolated point of the locus in the domain, but D = 0 is smooth there: a boundary point, not a singular one
     if ((v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated) &&
-        !v.tangent_to_boundary) {
+        !v.on_boundary) {
       jv["isolated"] = v.kind == bezoutian::Curve_topology_vertex::isolated;
       sing.push_back(jv);
     }

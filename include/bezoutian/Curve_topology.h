@@ -41,7 +41,9 @@ struct Curve_topology_vertex {
   bool on_boundary = false;
   /// The curve is tangent to the domain edge here (an even-order contact): it passes through the point from
   /// inside the domain (kind boundary, two arcs end here), or only the point itself is in the domain (kind
-  /// isolated).
+  /// isolated). At a domain corner: the curve is tangent to one of the two edges there and enters the domain
+  /// (kind boundary, one arc) or not (kind isolated). A corner that the curve crosses transversally from outside
+  /// is kind isolated with this flag false.
   bool tangent_to_boundary = false;
 };
 

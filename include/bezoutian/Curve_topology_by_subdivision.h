@@ -19,8 +19,9 @@
 //    point, which becomes a vertex) or from outside (the point alone: an isolated point of the locus in the
 //    domain), decided by exact signs (Touch); an odd-multiplicity root is a tangential crossing;
 //    A crossing at a corner of the domain is kept if the curve enters the box there (exact signs of dD/du,
-//    dD/dv at the rational corner); a crossing at an inner grid vertex is not handled (the result is then not
-//    certified);
+//    dD/dv at the rational corner; if the curve is tangent to an edge there, the exact sign of D along that edge
+//    next to the corner); if it does not enter, the corner alone is an isolated point of the locus in the domain;
+//    a crossing at an inner grid vertex is not handled (the result is then not certified);
 //  * otherwise split at the non-dyadic ratios 15/31 (u) and 16/33 (v) (symmetric data often has features on
 //    dyadic lines such as u = 1/2 or on the diagonal; the split lines and grid vertices avoid them).
 // The arcs glue along the exact crossings into the components. The result is certified when every sub-box is
@@ -504,9 +505,9 @@ class Subdivision_topology {
     Algebraic_real position;
     bool inside;
   };
-  // 1: from inside, 0: from outside, -1: undecided (a zero sign: cannot happen in a box simple across the edge)
-  int contact_from_inside(bool vertical, const Rational& c, const Algebraic_real& x, int multiplicity) const {
-    // p(x) = D on the line (x the free coordinate), q(x) = the derivative of D across the line
+  // D restricted to the line u = c (vertical, a polynomial in v) or v = c (in u), and the derivative of D across
+  // that line restricted to it.
+  void restriction(bool vertical, const Rational& c, Polynomial_1<Rational>& P, Polynomial_1<Rational>* Q = nullptr) const {
     std::vector<Rational> p, q;
     if (!vertical) {  // v = c: p(u) = sum_j D_j(u) c^j, q(u) = sum_j j D_j(u) c^(j-1)
       std::vector<Rational> cp(1, Rational(1));
@@ -529,13 +530,34 @@ class Subdivision_topology {
         q.push_back(da);
       }
     }
-    Polynomial_1<Rational> P(p.begin(), p.end()), Q(q.begin(), q.end());
+    if (p.empty()) p.push_back(Rational(0));
+    if (q.empty()) q.push_back(Rational(0));
+    P = Polynomial_1<Rational>(p.begin(), p.end());
+    if (Q) *Q = Polynomial_1<Rational>(q.begin(), q.end());
+  }
+
+  // 1: from inside, 0: from outside, -1: undecided (a zero sign: cannot happen in a box simple across the edge)
+  int contact_from_inside(bool vertical, const Rational& c, const Algebraic_real& x, int multiplicity) const {
+    Polynomial_1<Rational> P, Q;
+    restriction(vertical, c, P, &Q);
     for (int k = 0; k < multiplicity; ++k) P = CGAL::differentiate(P);
     const int side = x.sign_of(P), across = x.sign_of(Q);
     // bottom / left edge: inside iff sign D(edge) = -sign(D across); top / right edge: iff the signs agree
     if (side == 0 || across == 0) return -1;
     const bool low_edge = vertical ? c == box_.u0 : c == box_.v0;
     return (low_edge ? side == -across : side == across) ? 1 : 0;
+  }
+
+  // Sign of D on the line (vertical: u = c, in v; else v = c, in u) just beyond the rational root x, on the side
+  // `direction` (+1 / -1): the sign of the first nonvanishing derivative there, times direction^order.
+  int sign_next_to(bool vertical, const Rational& c, const Rational& x, int direction) const {
+    Polynomial_1<Rational> P;
+    restriction(vertical, c, P);
+    for (int order = 0; !CGAL::is_zero(P); ++order, P = CGAL::differentiate(P)) {
+      const int s = CGAL::sign(P.evaluate(x));
+      if (s != 0) return order % 2 == 0 ? s : s * direction;
+    }
+    return 0;
   }
 
   // A crossing on one edge of a box: its line, its root there and its position along the sorting coordinate.
@@ -559,6 +581,9 @@ class Subdivision_topology {
       const int cl = x.compare(lo), ch = x.compare(hi);
       if (cl < 0 || ch > 0) continue;
       if (L.roots[k].multiplicity > 1) {
+        // at a domain corner, on an edge across which the box is simple: the curve is tangent to that edge at the
+        // corner, decided by corner_crossing
+        if (touches && (cl == 0 || ch == 0) && is_domain_corner(vertical, c, cl == 0 ? lo : hi)) continue;
         if (!touches || cl == 0 || ch == 0) return false;
         if (L.roots[k].multiplicity % 2 == 0) {  // the curve touches the edge without crossing it
           const int inside = contact_from_inside(vertical, c, x, L.roots[k].multiplicity);
@@ -569,10 +594,7 @@ class Subdivision_topology {
         // odd multiplicity: a tangential crossing, an ordinary crossing for the topology (below)
       }
       if (cl == 0 || ch == 0) {  // at a box corner: domain corners are handled by corner_crossing
-        const Rational& e = cl == 0 ? lo : hi;
-        const bool domain_corner = (vertical ? (c == box_.u0 || c == box_.u1) : (c == box_.v0 || c == box_.v1)) &&
-                                   (vertical ? (e == box_.v0 || e == box_.v1) : (e == box_.u0 || e == box_.u1));
-        if (!domain_corner) {
+        if (!is_domain_corner(vertical, c, cl == 0 ? lo : hi)) {
           fail("the curve passes through a vertex of the subdivision grid");
           return false;
         }
@@ -585,9 +607,21 @@ class Subdivision_topology {
     return true;
   }
 
+  bool is_domain_corner(bool vertical, const Rational& c, const Rational& e) const {
+    return (vertical ? (c == box_.u0 || c == box_.u1) : (c == box_.v0 || c == box_.v1)) &&
+           (vertical ? (e == box_.v0 || e == box_.v1) : (e == box_.u0 || e == box_.u1));
+  }
+
   // The curve through the domain corner (cu, cv) of box B (D(cu, cv) = 0): a crossing if the curve enters the box
   // there, i.e. a tangent direction (D_v, -D_u) points strictly into the box's quadrant at that corner.
-  bool corner_crossing(const Box& B, const Rational& cu, const Rational& cv, bool sort_by_u, std::vector<Crossing>& out) {
+  // If the curve is tangent to a domain edge at the corner (D_v = 0 there: tangent to u = cu), first-order signs do
+  // not decide. In a box where dD/du != 0 (`simple` 2; 1: dD/dv != 0, 0: neither) the curve is a graph u = h(v)
+  // with h(cv) = cu, and D(cu, v) = D(h(v), v) + D_u (cu - h(v)) = D_u (cu - h(v)) (D_u at an intermediate point,
+  // of one sign on B): the side of h next to the corner is the exact sign of D on the edge there. Symmetrically for
+  // D_u = 0. If the curve does not enter the quadrant, the corner alone is a point of the locus in the domain (an
+  // isolated point on the boundary).
+  bool corner_crossing(const Box& B, const Rational& cu, const Rational& cv, bool sort_by_u, int simple,
+                       std::vector<Crossing>& out) {
     Rational d(0), du(0), dv(0);  // exact values at the corner
     for (int j = D_.degree(); j >= 0; --j) {
       Rational p(0), dp(0);
@@ -602,19 +636,40 @@ class Subdivision_topology {
     }
     if (d != 0) return true;
     const int tx = CGAL::sign(dv), ty = -CGAL::sign(du);
-    if (tx == 0 || ty == 0) {
-      fail("the curve is singular or tangent to a domain edge at a corner of the domain");
-      return false;
-    }
     const int sx = cu == B.u0 ? 1 : -1, sy = cv == B.v0 ? 1 : -1;
-    if (tx * sx != ty * sy) {
-      fail("the curve touches the domain at a corner only");
+    bool enters = false, tangent = false;
+    if (tx != 0 && ty != 0) {
+      enters = tx * sx == ty * sy;
+    } else if (tx == 0 && ty != 0 && simple == 2) {  // tangent to u = cu: graph u = h(v), side of h - cu
+      const int s = sign_next_to(true, cu, cv, sy);
+      enters = s != 0 && -s * CGAL::sign(du) == sx;
+      tangent = true;
+      if (s == 0) {
+        fail("internal inconsistency: D vanishes on a domain edge");
+        return false;
+      }
+    } else if (ty == 0 && tx != 0 && simple == 1) {  // tangent to v = cv: graph v = g(u), side of g - cv
+      const int s = sign_next_to(false, cv, cu, sx);
+      enters = s != 0 && -s * CGAL::sign(dv) == sy;
+      tangent = true;
+      if (s == 0) {
+        fail("internal inconsistency: D vanishes on a domain edge");
+        return false;
+      }
+    } else {
+      fail(tx == 0 && ty == 0 ? "the curve is singular at a corner of the domain"
+                              : "the curve is tangent to a domain edge at a corner of the domain");
       return false;
     }
     const Line& L = line(true, cu);
     for (std::size_t k = 0; k < L.roots.size(); ++k)
       if (L.roots[k].root.compare(cv) == 0) {
-        out.push_back(Crossing{true, cu, int(k), Algebraic_real(sort_by_u ? cu : cv)});
+        const std::size_t n = node(true, cu, int(k));
+        if (tangent) corner_tangent_.insert(n);
+        if (enters)
+          out.push_back(Crossing{true, cu, int(k), Algebraic_real(sort_by_u ? cu : cv)});
+        else
+          touch_[n] = 0;  // the corner alone: an isolated point of the locus in the domain
         return true;
       }
     fail("internal inconsistency: a corner root is missing on its line");
@@ -637,7 +692,7 @@ class Subdivision_topology {
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, by_u, cr))
+            !corner_crossing(B, *cu, *cv, by_u, dv_simple ? 1 : 2, cr))
           return false;
     if (cr.size() % 2 != 0) return false;  // cannot happen for a simple box; be safe and subdivide
     std::sort(cr.begin(), cr.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
@@ -962,7 +1017,7 @@ class Subdivision_topology {
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, true, cr))
+            !corner_crossing(B, *cu, *cv, true, 0, cr))
           return false;
     if (cr.size() != (extremum ? 0u : 4u)) return false;
     // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B
@@ -1140,11 +1195,22 @@ class Subdivision_topology {
     v.kind = v.on_boundary ? Curve_topology_vertex::boundary
                            : (cut_.count(n) ? Curve_topology_vertex::phantom_cut : Curve_topology_vertex::regular);
     const auto touch = touch_.find(n);
-    if (touch != touch_.end()) {
-      v.tangent_to_boundary = true;
+    if (touch != touch_.end()) {  // a contact with an edge, or a domain corner that the curve does not enter
+      v.tangent_to_boundary = !is_corner_node(n) || corner_tangent_.count(n) > 0;
       if (touch->second == 0) v.kind = Curve_topology_vertex::isolated;
+    } else if (corner_tangent_.count(n)) {
+      v.tangent_to_boundary = true;  // the curve ends at a domain corner, tangent to one of its edges
     }
     return v;
+  }
+
+  bool is_corner_node(std::size_t n) const {
+    const Node_key& k = keys_[n];
+    if (k.singular) return false;
+    const auto& roots = lines_.at(std::make_pair(k.vertical, k.c)).roots;
+    const Algebraic_real& x = roots[std::size_t(k.index)].root;
+    return on_domain_boundary(n) && (k.vertical ? (x.compare(box_.v0) == 0 || x.compare(box_.v1) == 0)
+                                                : (x.compare(box_.u0) == 0 || x.compare(box_.u1) == 0));
   }
 
   bool on_domain_boundary(std::size_t n) const {
@@ -1297,6 +1363,7 @@ class Subdivision_topology {
   std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)
   static constexpr int undecided_depth = 16;  // below it such a point waits for the phantom exclusion
   std::set<std::size_t> cut_;             // nodes on the edges of excised boxes
+  std::set<std::size_t> corner_tangent_;  // domain corners where the curve is tangent to an edge
   std::map<std::size_t, std::size_t> touch_;  // contacts with a domain edge: node -> arcs there (2 inside, 0 outside)
   std::vector<Parameter_box> excised_;
   bool failed_ = false;
