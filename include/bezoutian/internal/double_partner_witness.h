@@ -201,6 +201,70 @@ class Partner_equations {
         a[k][d] = horner_interval(d == 0 ? A_[k].if_ : (d == 1 ? A_[k].ifu : A_[k].ifv), P);
         b[k][d] = horner_interval(d == 0 ? B_[k].if_ : (d == 1 ? B_[k].ifu : B_[k].ifv), Q);
       }
+    combine(a, b, E, J);
+  }
+
+  /// E (and dE/dz) with the projection-plane point fixed to the box x = (x1, x2), for many partner boxes y (the
+  /// phantom exclusion): the part of each form that depends on x alone is evaluated once, by Horner in the fixed
+  /// coordinate, so that a partner box costs one univariate Horner per form instead of a bivariate one. P's fixed
+  /// coordinate is its first (u = x1), Q's its second (x2), in both kinds of locus. Outward-rounded enclosures,
+  /// as evaluate().
+  class Restriction {
+   public:
+    Restriction(const Partner_equations& eq, const Double_interval& x1, const Double_interval& x2)
+        : eq_(&eq), x1_(x1), x2_(x2) {
+      for (int k = 0; k < 4; ++k)
+        for (int d = 0; d < 3; ++d) {
+          const Form& A = eq.A_[std::size_t(k)];
+          const Form& B = eq.B_[std::size_t(k)];
+          const auto& fa = d == 0 ? A.if_ : (d == 1 ? A.ifu : A.ifv);
+          const auto& fb = d == 0 ? B.if_ : (d == 1 ? B.ifu : B.ifv);
+          // P = (x1, free): coefficient of free^j is sum_i fa[j][i] x1^i
+          for (const auto& row : fa) a_[k][d].push_back(horner_1(row, x1));
+          // Q = (free, x2): coefficient of free^i is sum_j fb[j][i] x2^j
+          std::size_t m = 0;
+          for (const auto& row : fb) m = std::max(m, row.size());
+          std::vector<Double_interval> column(fb.size());
+          for (std::size_t i = 0; i < m; ++i) {
+            for (std::size_t j = 0; j < fb.size(); ++j) column[j] = i < fb[j].size() ? fb[j][i] : Double_interval{0, 0};
+            b_[k][d].push_back(horner_1(column, x2));
+          }
+        }
+    }
+    /// E(x; y) (and dE/dz at (x, y), z = (x1, x2, y1, y2)) over the partner box y.
+    void evaluate(const std::array<Double_interval, 2>& y, std::array<Double_interval, 3>& E,
+                  std::array<std::array<Double_interval, 4>, 3>* J = nullptr) const {
+      const bool self = eq_->self_;
+      const Double_interval p = self ? x2_ + y[1] : y[0], q = self ? x1_ + y[0] : y[1];
+      std::array<std::array<Double_interval, 3>, 4> a, b;
+      for (int k = 0; k < 4; ++k)
+        for (int d = 0; d < (J ? 3 : 1); ++d) {
+          a[k][d] = horner_1(a_[k][d], p);
+          b[k][d] = horner_1(b_[k][d], q);
+        }
+      eq_->combine(a, b, E, J);
+    }
+
+   private:
+    const Partner_equations* eq_;
+    Double_interval x1_, x2_;
+    std::array<std::array<std::vector<Double_interval>, 3>, 4> a_, b_;
+  };
+
+ private:
+  static Double_interval horner_1(const std::vector<Double_interval>& c, const Double_interval& x) {
+    Double_interval r{0, 0};
+    if (x.lo >= 0 && std::isfinite(x.hi)) {
+      for (std::size_t i = c.size(); i-- > 0;) r = Double_interval::add(Double_interval::mul_nonnegative(r, x), c[i]);
+    } else {
+      for (std::size_t i = c.size(); i-- > 0;) r = r * x + c[i];
+    }
+    return r;
+  }
+  // E = A_c(P) B_0(Q) - B_c(Q) A_0(P) and its Jacobian from the forms' values and partial derivatives at P, Q.
+  void combine(const std::array<std::array<Double_interval, 3>, 4>& a, const std::array<std::array<Double_interval, 3>, 4>& b,
+               std::array<Double_interval, 3>& E, std::array<std::array<Double_interval, 4>, 3>* J) const {
+    using D = Double_interval;
     for (int c = 1; c <= 3; ++c) {
       E[c - 1] = a[c][0] * b[0][0] - b[c][0] * a[0][0];
       if (!J) continue;
@@ -215,6 +279,7 @@ class Partner_equations {
     }
   }
 
+ public:
   /// The weights A_0(P), B_0(Q) over the real box z (outward-rounded double interval arithmetic).
   std::array<Double_interval, 2> weights(const std::array<Double_interval, 4>& z) const {
     std::array<Double_interval, 2> P, Q;
@@ -693,6 +758,8 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
                                std::vector<std::array<Double_interval, 2>>* survivors = nullptr) {
   using D = Double_interval;
   const D x1 = D::hull(box.u0, box.u1), x2 = D::hull(box.v0, box.v1);
+  const Partner_equations::Restriction on_box(eq, x1, x2);
+  std::unique_ptr<Partner_equations::Restriction> at_centre;  // x at the box's centre (mean value forms)
   std::array<D, 2> range;
   if (eq.self_intersection())  // l: u + l in [d.u0, d.u1]; k: v + k in [d.v0, d.v1]
     range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
@@ -721,11 +788,11 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
     stack.pop_back();
     if (++pieces > max_pieces) return give_up(y);
     std::array<D, 3> E;
-    eq.evaluate({x1, x2, y[0], y[1]}, E);
+    on_box.evaluate(y, E);
     if (!E[0].contains_zero() || !E[1].contains_zero() || !E[2].contains_zero()) continue;
     {  // mean value form: E(c) + dE/dz (box) (z - c), c the centre (much tighter on small pieces)
       std::array<std::array<D, 4>, 3> J;
-      eq.evaluate({x1, x2, y[0], y[1]}, E, &J);
+      on_box.evaluate(y, E, &J);
       const std::array<D, 4> z{x1, x2, y[0], y[1]};
       std::array<D, 4> c, dz;
       for (int i = 0; i < 4; ++i) {
@@ -733,8 +800,9 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
         c[i] = D{m, m};
         dz[i] = z[i] - c[i];
       }
+      if (!at_centre) at_centre.reset(new Partner_equations::Restriction(eq, c[0], c[1]));
       std::array<D, 3> Ec;
-      eq.evaluate(c, Ec);
+      at_centre->evaluate({c[2], c[3]}, Ec);
       bool excluded = false;
       for (int r = 0; r < 3 && !excluded; ++r) {
         D v = Ec[r];
@@ -747,7 +815,7 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
     const D h0{std::min(y[0].lo, 0.0), std::max(y[0].hi, 0.0)}, h1{std::min(y[1].lo, 0.0), std::max(y[1].hi, 0.0)};
     if (eq.self_intersection() && (h0.hi - h0.lo) + (h1.hi - h1.lo) <= 3 * ((y[0].hi - y[0].lo) + (y[1].hi - y[1].lo))) {
       std::array<std::array<D, 4>, 3> J;
-      eq.evaluate({x1, x2, h0, h1}, E, &J);
+      on_box.evaluate({h0, h1}, E, &J);
       bool full_rank = false;
       for (int r = 0; r < 3 && !full_rank; ++r)
         for (int q = r + 1; q < 3 && !full_rank; ++q)
