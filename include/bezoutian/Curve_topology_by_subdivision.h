@@ -874,19 +874,31 @@ class Subdivision_topology {
     // Bernstein basis values and first/second derivatives in each variable
     auto basis = [](int n, long double t, std::vector<long double>& B0, std::vector<long double>& B1,
                     std::vector<long double>& B2) {
-      auto bern = [&](int deg, std::vector<long double>& out) {
-        out.assign(std::size_t(std::max(deg, 0) + 1), 0.0L);
-        if (deg < 0) return;
-        out[0] = 1;
-        for (int d = 1; d <= deg; ++d) {
-          for (int k = d; k >= 1; --k) out[k] = out[k] * (1 - t) + out[k - 1] * t;
-          out[0] *= (1 - t);
+      // the bases of degrees n - 2, n - 1, n by one recursion (each degree is one step from the previous one)
+      auto raise = [&](const std::vector<long double>& from, std::vector<long double>& out) {
+        const std::size_t d = from.size();
+        out.assign(d + 1, 0.0L);
+        for (std::size_t k = 0; k < d; ++k) {
+          out[k] += from[k] * (1 - t);
+          out[k + 1] += from[k] * t;
         }
       };
-      std::vector<long double> b1, b2;
-      bern(n, B0);
-      bern(n - 1, b1);
-      bern(n - 2, b2);
+      std::vector<long double> b1, b2, cur(1, 1.0L), next;  // degrees n - 1, n - 2; cur starts at degree 0
+      if (n == 0) {
+        B0 = cur;
+      } else {
+        for (int d = 1; d <= n - 2; ++d) {
+          raise(cur, next);
+          cur.swap(next);
+        }
+        if (n >= 2) {
+          b2 = cur;
+          raise(b2, b1);
+        } else {
+          b1 = cur;
+        }
+        raise(b1, B0);
+      }
       B1.assign(std::size_t(n + 1), 0.0L);
       B2.assign(std::size_t(n + 1), 0.0L);
       for (int k = 0; k <= n; ++k) {  // d/dt B_k^n = n (B_{k-1}^{n-1} - B_k^{n-1})
@@ -1124,7 +1136,7 @@ class Subdivision_topology {
     const int nx = by_u ? G.a() : G.b(), ny = by_u ? G.b() : G.a();
     const double gx0 = CGAL::to_double(by_u ? B.u0 : B.v0), gx1 = CGAL::to_double(by_u ? B.u1 : B.v1);
     const double lo = CGAL::to_double(by_u ? B.v0 : B.u0), hi = CGAL::to_double(by_u ? B.v1 : B.u1);
-    std::vector<double> c(std::size_t(ny + 1)), w(std::size_t(std::max(nx, ny) + 1));
+    std::vector<double> c(std::size_t(ny + 1)), w(std::size_t(std::max(nx, ny) + 1)), basis(std::size_t(nx + 1));
     auto casteljau = [&](std::size_t n, double t) {  // value at t of the Bernstein coefficients w[0..n]
       for (std::size_t r = 1; r <= n; ++r)
         for (std::size_t k = 0; k + r <= n; ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
@@ -1133,22 +1145,50 @@ class Subdivision_topology {
     for (int k = 1; k < o_.samples_per_arc; ++k) {
       const double x = x0 + (x1 - x0) * double(k) / o_.samples_per_arc;
       const double tx = std::min(1.0, std::max(0.0, (x - gx0) / (gx1 - gx0)));
-      for (int j = 0; j <= ny; ++j) {  // coefficients along the line: D(x, .) in the Bernstein basis of the box
-        for (int i = 0; i <= nx; ++i) w[std::size_t(i)] = by_u ? G.at(i, j) : G.at(j, i);
-        c[std::size_t(j)] = casteljau(std::size_t(nx), tx);
+      // coefficients along the line: D(x, .) in the Bernstein basis of the box, sum_i B_i(tx) G(i, .) (the
+      // basis values are nonnegative and sum to 1: a convex combination, as stable as de Casteljau)
+      basis[0] = 1;
+      for (int d = 1; d <= nx; ++d) {
+        basis[std::size_t(d)] = basis[std::size_t(d - 1)] * tx;
+        for (int k = d - 1; k >= 1; --k) basis[std::size_t(k)] = basis[std::size_t(k)] * (1 - tx) + basis[std::size_t(k - 1)] * tx;
+        basis[0] *= (1 - tx);
+      }
+      for (int j = 0; j <= ny; ++j) {
+        double sum = 0;
+        for (int i = 0; i <= nx; ++i) sum += basis[std::size_t(i)] * (by_u ? G.at(i, j) : G.at(j, i));
+        c[std::size_t(j)] = sum;
       }
       auto f = [&](double t) {
         std::copy(c.begin(), c.end(), w.begin());
         return casteljau(std::size_t(ny), t);
       };
-      double a = 0, b = 1;
-      const double fa = f(a);
-      for (int it = 0; it < 60; ++it) {
-        const double m = 0.5 * (a + b), fm = f(m);
-        if ((fm < 0) == (fa < 0))
+      // Illinois (regula falsi with halving of the retained end's value), every fourth step a bisection: the
+      // bracket always holds the sign change and shrinks superlinearly (plain bisection needed 60 evaluations)
+      double a = 0, b = 1, fa = f(a), fb = f(b);
+      const bool bracketed = (fa < 0) != (fb < 0) && fa != 0 && fb != 0;
+      int kept = 0;  // which end was retained last (-1 a, 1 b)
+      for (int it = 0; it < 80 && b - a > 4.5e-16; ++it) {  // (t in [0, 1]: a few ulps)
+        double m = 0.5 * (a + b);
+        if (bracketed && it % 4 != 3) {
+          const double r = (a * fb - b * fa) / (fb - fa);
+          if (r > a && r < b) m = r;
+        }
+        const double fm = f(m);
+        if (fm == 0) {
+          a = b = m;
+          break;
+        }
+        if ((fm < 0) == (fa < 0)) {
           a = m;
-        else
+          fa = fm;
+          if (kept == 1) fb *= 0.5;
+          kept = 1;
+        } else {
           b = m;
+          fb = fm;
+          if (kept == -1) fa *= 0.5;
+          kept = -1;
+        }
       }
       const double y = lo + 0.5 * (a + b) * (hi - lo);
       out.push_back(by_u ? std::array<double, 2>{x, y} : std::array<double, 2>{y, x});
