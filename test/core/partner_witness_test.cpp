@@ -178,3 +178,81 @@ TEST_CASE("partners of a bi-degree (3,2) self-intersection: the folded patch's d
     CHECK(std::abs(partners[0][1]) < 1e-8);
   }
 }
+
+namespace {
+// Forward-mode derivative over the rationals: exact values and first derivatives, independent of the library.
+struct Dual {
+  Q v, d;
+  Dual(const Q& value = Q(0), const Q& derivative = Q(0)) : v(value), d(derivative) {}
+};
+Dual operator+(const Dual& a, const Dual& b) { return {a.v + b.v, a.d + b.d}; }
+Dual operator-(const Dual& a, const Dual& b) { return {a.v - b.v, a.d - b.d}; }
+Dual operator*(const Dual& a, const Dual& b) { return {a.v * b.v, a.v * b.d + a.d * b.v}; }
+// homogeneous coordinate k (0: the weight) of the patch at (u, v), from its Bernstein net
+Dual homogeneous(const Patch& p, int k, const Dual& u, const Dual& v) {
+  const auto& net = p.homogeneous_net();
+  const int m = int(net.size()) - 1, n = int(net[0].size()) - 1;
+  auto basis = [](int deg, int i, const Dual& t) {
+    Dual r(Q(1));
+    Q binomial(1);
+    for (int s = 1; s <= i; ++s) binomial = binomial * Q(deg - i + s) / Q(s);
+    for (int s = 0; s < i; ++s) r = r * t;
+    for (int s = 0; s < deg - i; ++s) r = r * (Dual(Q(1)) - t);
+    return r * Dual(binomial);
+  };
+  Dual sum;
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j) sum = sum + Dual(net[i][j][k]) * basis(m, i, u) * basis(n, j, v);
+  return sum;
+}
+}  // namespace
+
+// The phantom exclusion evaluates the partner equations through Partner_equations::Restriction (x fixed to a
+// box, many partner boxes y). Its enclosures must hold the exact values E_c(z) = Phi_c(P) Psi_0(Q) -
+// Psi_c(Q) Phi_0(P) and the exact derivatives dE_c/dz_i at rational points z of box x piece, computed here from
+// the Bernstein nets with exact dual numbers.
+TEST_CASE("partner equations restricted to a box enclose the exact values and derivatives", "[surface][witness]") {
+  using D = internal::Double_interval;
+  std::mt19937 g(20261122);
+  std::uniform_int_distribution<int> end(-24, 88), pick(0, 1000);
+  auto interval = [&]() {  // rational ends in [-3/8, 11/8]: both signs, and pieces outside [0, 1]
+    int p = end(g), q = end(g);
+    if (p > q) std::swap(p, q);
+    if (p == q) ++q;
+    return std::array<Q, 2>{Q(p, 64), Q(q, 64)};
+  };
+  for (int trial = 0; trial < 24; ++trial) {
+    const bool self = trial % 2 == 0, rational = trial % 4 >= 2;
+    const int m = 1 + trial % 3, n = 1 + (trial / 3) % 3;
+    const Patch phi = random_patch(g, m, n, rational), other = random_patch(g, n, m, rational);
+    const Patch& psi = self ? phi : other;
+    const internal::Partner_equations eq = self ? internal::Partner_equations(phi) : internal::Partner_equations(phi, psi);
+    const std::array<std::array<Q, 2>, 4> box{interval(), interval(), interval(), interval()};  // x1, x2, y1, y2
+    const internal::Partner_equations::Restriction R(eq, D::hull(box[0][0], box[0][1]), D::hull(box[1][0], box[1][1]));
+    std::array<D, 3> E, E_only;
+    std::array<std::array<D, 4>, 3> J;
+    R.evaluate({D::hull(box[2][0], box[2][1]), D::hull(box[3][0], box[3][1])}, E, &J);
+    R.evaluate({D::hull(box[2][0], box[2][1]), D::hull(box[3][0], box[3][1])}, E_only);
+    for (int sample = 0; sample < 6; ++sample) {
+      std::array<Q, 4> z;
+      for (int i = 0; i < 4; ++i) z[i] = box[i][0] + (box[i][1] - box[i][0]) * Q(pick(g), 1000);
+      for (int i = 0; i < 4; ++i) {  // derivative along z_i
+        std::array<Dual, 4> w;
+        for (int c = 0; c < 4; ++c) w[c] = Dual(z[c], Q(c == i ? 1 : 0));
+        const Dual p0 = self ? w[0] : w[0], p1 = self ? w[1] + w[3] : w[2];
+        const Dual q0 = self ? w[0] + w[2] : w[3], q1 = w[1];
+        for (int c = 1; c <= 3; ++c) {
+          const Dual e = homogeneous(phi, c, p0, p1) * homogeneous(psi, 0, q0, q1) -
+                         homogeneous(psi, c, q0, q1) * homogeneous(phi, 0, p0, p1);
+          INFO("trial " << trial << " equation " << c << " variable " << i);
+          CHECK(Q(E[c - 1].lo) <= e.v);
+          CHECK(e.v <= Q(E[c - 1].hi));
+          CHECK(Q(E_only[c - 1].lo) <= e.v);
+          CHECK(e.v <= Q(E_only[c - 1].hi));
+          CHECK(Q(J[c - 1][i].lo) <= e.d);
+          CHECK(e.d <= Q(J[c - 1][i].hi));
+        }
+      }
+    }
+  }
+}
