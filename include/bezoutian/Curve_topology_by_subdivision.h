@@ -620,8 +620,10 @@ class Subdivision_topology {
   // of one sign on B): the side of h next to the corner is the exact sign of D on the edge there. Symmetrically for
   // D_u = 0. If the curve does not enter the quadrant, the corner alone is a point of the locus in the domain (an
   // isolated point on the boundary).
+  // `isolated` receives the nodes of corners that the curve passes from outside (the caller records them when it
+  // resolves the box).
   bool corner_crossing(const Box& B, const Rational& cu, const Rational& cv, bool sort_by_u, int simple,
-                       std::vector<Crossing>& out) {
+                       std::vector<Crossing>& out, std::vector<std::size_t>& isolated) {
     Rational d(0), du(0), dv(0);  // exact values at the corner
     for (int j = D_.degree(); j >= 0; --j) {
       Rational p(0), dp(0);
@@ -669,7 +671,7 @@ class Subdivision_topology {
         if (enters)
           out.push_back(Crossing{true, cu, int(k), Algebraic_real(sort_by_u ? cu : cv)});
         else
-          touch_[n] = 0;  // the corner alone: an isolated point of the locus in the domain
+          isolated.push_back(n);  // the corner alone: an isolated point of the locus in the domain
         return true;
       }
     fail("internal inconsistency: a corner root is missing on its line");
@@ -689,10 +691,11 @@ class Subdivision_topology {
         !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr, t_horizontal(B.v0)) ||
         !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr, t_horizontal(B.v1)))
       return false;
+    std::vector<std::size_t> isolated_corners;
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, by_u, dv_simple ? 1 : 2, cr))
+            !corner_crossing(B, *cu, *cv, by_u, dv_simple ? 1 : 2, cr, isolated_corners))
           return false;
     if (cr.size() % 2 != 0) return false;  // cannot happen for a simple box; be safe and subdivide
     std::sort(cr.begin(), cr.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
@@ -725,6 +728,7 @@ class Subdivision_topology {
     }
     for (const Touch& t : touches)
       if (!t.inside) touch_[node(t.vertical, t.c, t.index)] = 0;  // the contact point alone: an isolated point
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
     return true;
   }
 
@@ -1026,10 +1030,11 @@ class Subdivision_topology {
     if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
         !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
       return false;
+    std::vector<std::size_t> isolated_corners;
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, true, 0, cr))
+            !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
           return false;
     if (cr.size() != (extremum ? 0u : 4u)) return false;
     // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B
@@ -1089,6 +1094,7 @@ class Subdivision_topology {
       return false;
     }
     singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum});
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
     const std::size_t ps = node_singular(singular_.size() - 1);
     for (const Crossing& c : cr) {
       const std::size_t n = node(c.vertical, c.c, c.index);
