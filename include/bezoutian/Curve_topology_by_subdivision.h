@@ -624,40 +624,23 @@ class Subdivision_topology {
   // resolves the box).
   bool corner_crossing(const Box& B, const Rational& cu, const Rational& cv, bool sort_by_u, int simple,
                        std::vector<Crossing>& out, std::vector<std::size_t>& isolated) {
-    Rational d(0), du(0), dv(0);  // exact values at the corner
-    for (int j = D_.degree(); j >= 0; --j) {
-      Rational p(0), dp(0);
-      if (!CGAL::is_zero(D_[j]))
-        for (int i = D_[j].degree(); i >= 0; --i) {
-          dp = dp * cu + p;
-          p = p * cu + Rational(D_[j][i]);
-        }
-      dv = dv * cv + d;
-      d = d * cv + p;
-      du = du * cv + dp;
-    }
-    if (d != 0) return true;
-    const int tx = CGAL::sign(dv), ty = -CGAL::sign(du);
+    const auto e = exact_jet(cu, cv);  // D, D_u, D_v at the corner
+    if (e[0] != 0) return true;
+    const int tx = CGAL::sign(e[2]), ty = -CGAL::sign(e[1]);
     const int sx = cu == B.u0 ? 1 : -1, sy = cv == B.v0 ? 1 : -1;
     bool enters = false, tangent = false;
     if (tx != 0 && ty != 0) {
       enters = tx * sx == ty * sy;
-    } else if (tx == 0 && ty != 0 && simple == 2) {  // tangent to u = cu: graph u = h(v), side of h - cu
-      const int s = sign_next_to(true, cu, cv, sy);
-      enters = s != 0 && -s * CGAL::sign(du) == sx;
-      tangent = true;
+    } else if ((tx == 0) != (ty == 0) && simple == (tx == 0 ? 2 : 1)) {
+      // tangent to the edge u = cu (tx == 0: a graph u = h(v), the side of h - cu next to the corner) or to v = cv
+      const bool on_u_line = tx == 0;
+      const int s = on_u_line ? sign_next_to(true, cu, cv, sy) : sign_next_to(false, cv, cu, sx);
       if (s == 0) {
         fail("internal inconsistency: D vanishes on a domain edge");
         return false;
       }
-    } else if (ty == 0 && tx != 0 && simple == 1) {  // tangent to v = cv: graph v = g(u), side of g - cv
-      const int s = sign_next_to(false, cv, cu, sx);
-      enters = s != 0 && -s * CGAL::sign(dv) == sy;
+      enters = -s * CGAL::sign(on_u_line ? e[1] : e[2]) == (on_u_line ? sx : sy);
       tangent = true;
-      if (s == 0) {
-        fail("internal inconsistency: D vanishes on a domain edge");
-        return false;
-      }
     } else {
       fail(tx == 0 && ty == 0 ? "the curve is singular at a corner of the domain"
                               : "the curve is tangent to a domain edge at a corner of the domain");
