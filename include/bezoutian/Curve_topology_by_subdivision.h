@@ -27,8 +27,9 @@
 // The arcs glue along the exact crossings into the components. The result is certified when every sub-box is
 // excluded or simple: the curve has then no singular point in the box (near a singular or isolated point
 // neither derivative keeps a sign, and the subdivision stops at the first box that reaches `max_depth`, with
-// `certified == false`, naming that box). Arc sample points are floating-point (bisection on a vertical/horizontal segment where
-// the exact analysis proved exactly one crossing); vertex enclosures are exact isolating intervals.
+// `certified == false`, naming that box). Arc sample points are floating-point (a bracketing root refinement,
+// Illinois with bisection steps, on a vertical/horizontal segment where the exact analysis proved exactly one
+// crossing); vertex enclosures are exact isolating intervals.
 //
 // Singular and isolated points (nondegenerate ones: ordinary nodes and acnodes). A box B that is neither
 // excluded nor simple is resolved around a critical point p of D when
@@ -1114,7 +1115,7 @@ class Subdivision_topology {
   }
 
   // Floating-point samples strictly between the two ends: the unique crossing of the segment u = const
-  // (v = const) with the curve, by bisection.
+  // (v = const) with the curve, by a bracketing root refinement (Illinois with a bisection every fourth step).
   void sample_arc(const Box& B, bool by_u, const Algebraic_real& p0, const Algebraic_real& p1,
                   std::vector<std::array<double, 2>>& out) const {
     // Bisection on the sign of D along the line through each sample abscissa, evaluated from the box's double
