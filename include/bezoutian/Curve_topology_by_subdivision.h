@@ -55,6 +55,7 @@
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/internal/double_bernstein_grid.h>
 #include <bezoutian/internal/interval_krawczyk.h>
+#include <bezoutian/internal/multiple_point_blowup.h>
 #include <bezoutian/number_types.h>
 
 #include <CGAL/Interval_nt.h>
@@ -76,6 +77,15 @@
 #include <vector>
 
 namespace bezoutian {
+
+/// A point p of D = 0 known to the caller to be multiple: the exact p is the only point of `enclosure` where D and
+/// all its partial derivatives of order < `multiplicity` vanish, and they do vanish there (e.g. a common zero of all
+/// entries of the n x n Bezoutian matrix, whose determinant then vanishes to order n: internal/matrix_zero_points.h).
+/// The subdivision proves the rest (the tangent cone, the half-branches, no other critical point nearby).
+struct Known_multiple_point {
+  Parameter_box enclosure;
+  int multiplicity = 3;
+};
 
 /// Limits of subdivide_curve_in_box().
 struct Subdivision_topology_options {
@@ -99,6 +109,10 @@ struct Subdivision_topology_options {
   /// Curve_topology_in_box::excluded_regions and the arcs that enter it end at phantom_cut vertices.
   std::function<bool(const Parameter_box&)> no_genuine_points;
   int genuine_test_depth = 2;  ///< the test is tried on boxes that are not excluded, from this depth
+  /// Multiple points of D = 0 (multiplicity >= 3, or degenerate double points) that the Morse analysis of singular
+  /// points cannot resolve; a box that contains one is resolved around it by the blow-up analysis of the header
+  /// comment. Empty: such points leave the result not certified.
+  std::vector<Known_multiple_point> multiple_points;
 };
 
 /// Result of subdivide_curve_in_box().
@@ -152,6 +166,7 @@ class Subdivision_topology {
     // the splits are convex combinations (interval widths do not grow), so after the conversion the grids need
     // only enough bits to separate the values met near the curve: 144 bits, much cheaper than root_prec_
     prec_ = std::min<mpfr_prec_t>(root_prec_, 144);
+    for (const Known_multiple_point& k : o_.multiple_points) multiple_.push_back(Multiple_point{k, nullptr, false});
   }
 
   Subdivision_topology_result run() {
@@ -198,7 +213,11 @@ class Subdivision_topology {
         return res;
       }
       if ((dv || du) && resolve(B, dv)) continue;
-      if (!failed_ && B.depth >= o_.singular_analysis_depth && resolve_singular(B)) continue;
+      if (!failed_ && B.depth >= o_.singular_analysis_depth) {
+        const int m = multiple_point_in(B);
+        if (m >= 0 && resolve_multiple(B, std::size_t(m))) continue;
+        if (!failed_ && resolve_singular(B)) continue;
+      }
       if (failed_) {
         res.reason = failure_;
         return res;
@@ -208,6 +227,11 @@ class Subdivision_topology {
         res.reason = "a box near (" + std::to_string(CGAL::to_double(B.u0)) + ", " +
                      std::to_string(CGAL::to_double(B.v0)) + ") was neither excluded nor simple at depth " +
                      std::to_string(o_.max_depth) + " (a singular, isolated or tangential point)";
+        const int m = multiple_point_in(B);
+        if (m >= 0)
+          res.reason += "; it holds a point of multiplicity >= " + std::to_string(multiple_[m].known.multiplicity) +
+                        " whose tangent cone or neighbourhood was not resolved" +
+                        (multiple_[m].refuted ? " (its Taylor coefficients of lower order are not all zero)" : "");
         return res;
       }
       split(B, stack);
@@ -735,6 +759,7 @@ class Subdivision_topology {
   struct Singular_point {
     Rational u_lo, u_hi, v_lo, v_hi;  // certified enclosure of p
     bool isolated;
+    int half_branches;  // arcs that end at p (0 for an isolated point)
   };
 
   // Bernstein range (hull of the coefficients) on the box of d^2 D / dx^(2-k) dy^k in the box's local
@@ -1077,9 +1102,19 @@ class Subdivision_topology {
            "proved");
       return false;
     }
-    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum});
+    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum, extremum ? 0 : 4});
     for (std::size_t n : isolated_corners) touch_[n] = 0;
-    const std::size_t ps = node_singular(singular_.size() - 1);
+    connect_to_point(B, cr, node_singular(singular_.size() - 1), x, y);
+    return true;
+  }
+
+  // The arcs of D = 0 in B from each crossing to the singular point p at local coordinates (x, y) of B, with
+  // floating-point samples along them for drawing.
+  void connect_to_point(const Box& B, const std::vector<Crossing>& cr, std::size_t ps, long double x, long double y) {
+    std::vector<long double> L(std::size_t(a_ + 1) * (b_ + 1));
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) L[std::size_t(i) * (b_ + 1) + j] = B.fast->at(i, j);
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
     for (const Crossing& c : cr) {
       const std::size_t n = node(c.vertical, c.c, c.index);
       Arc arc{n, ps, {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
@@ -1102,6 +1137,104 @@ class Subdivision_topology {
                              CGAL::to_double(B.v0) + double(py) * CGAL::to_double(wv)});
       }
       arcs_.push_back(arc);
+    }
+  }
+
+  // ---- known multiple points (see the header comment) ----
+  struct Multiple_point {
+    Known_multiple_point known;
+    std::shared_ptr<const Multiple_point_blowup> blowup;  // Taylor coefficients at the enclosure, on first use
+    bool refuted;  // a coefficient of order < multiplicity is proved nonzero: the point is ignored
+  };
+
+  // The known multiple point whose enclosure lies strictly inside B, or -1.
+  int multiple_point_in(const Box& B) const {
+    for (std::size_t m = 0; m < multiple_.size(); ++m) {
+      const Parameter_box& K = multiple_[m].known.enclosure;
+      if (B.u0 < K.u0 && K.u1 < B.u1 && B.v0 < K.v0 && K.v1 < B.v1) return int(m);
+    }
+    return -1;
+  }
+
+  // Resolves box B around the known multiple point p (enclosure K strictly inside B): the tangent cone has L real
+  // lines, all simple, and grad D != 0 on (p + [-r, r]^2) \ {p} (internal/multiple_point_blowup.h); grad D != 0
+  // on the rest of B (the Bernstein coefficients of D_u or of D_v keep a sign on every sub-box outside that
+  // square); D = 0 crosses the edges of B exactly 2L times. Then D = 0 in B is the 2L half-branches from p to the
+  // crossings (the argument of the header comment). Returns false (B is split) otherwise.
+  bool resolve_multiple(Box& B, std::size_t index) {
+    Multiple_point& mp = multiple_[index];
+    if (mp.refuted) return false;
+    const Parameter_box& K = mp.known.enclosure;
+    if (!mp.blowup) {
+      mp.blowup = std::make_shared<const Multiple_point_blowup>(D_, K, mp.known.multiplicity,
+                                                                root_prec_ + mpfr_prec_t(bits_) + 128);
+      mp.refuted = !mp.blowup->consistent();
+      if (mp.refuted) return false;
+    }
+    // the largest power of two r <= half the distance from K to the edges of B for which the cone is proved
+    const Rational dist = std::min(std::min(K.u0 - B.u0, B.u1 - K.u1), std::min(K.v0 - B.v0, B.v1 - K.v1));
+    Rational r(1);
+    while (r > dist / 2) r /= 2;
+    while (r * 2 <= dist / 2) r *= 2;
+    int lines = -1;
+    for (int attempt = 0; attempt < 3 && lines < 0; ++attempt) {
+      lines = mp.blowup->tangent_lines(r);
+      if (lines < 0) r /= 8;
+    }
+    if (lines < 0) return false;
+    std::vector<Crossing> cr;
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+      return false;
+    std::vector<std::size_t> isolated_corners;
+    for (const Rational* cu : {&B.u0, &B.u1})
+      for (const Rational* cv : {&B.v0, &B.v1})
+        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
+            !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
+          return false;
+    if (cr.size() != 2 * std::size_t(lines)) return false;
+    if (!no_critical_point_outside(B, Parameter_box{K.u1 - r, K.u0 + r, K.v1 - r, K.v0 + r})) return false;
+    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, lines == 0, 2 * lines});
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    connect_to_point(B, cr, node_singular(singular_.size() - 1),
+                     CGAL::to_double(((K.u0 + K.u1) / 2 - B.u0) / wu), CGAL::to_double(((K.v0 + K.v1) / 2 - B.v0) / wv));
+    return true;
+  }
+
+  // grad D != 0 on B outside the box S: sub-boxes (double grids, proved radius) where D_u or D_v keeps a sign,
+  // or that lie inside S.
+  bool no_critical_point_outside(Box& B, const Parameter_box& S) {
+    struct Piece {
+      std::shared_ptr<const Double_bernstein_grid> g;
+      double x0, x1, y0, y1;  // local coordinates in B (dyadic: exact)
+      int depth;
+    };
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    const Rational sx0 = (S.u0 - B.u0) / wu, sx1 = (S.u1 - B.u0) / wu, sy0 = (S.v0 - B.v0) / wv,
+                   sy1 = (S.v1 - B.v0) / wv;
+    const double aspect = CGAL::to_double(wu) / CGAL::to_double(wv);
+    std::vector<Piece> stack{{double_grid_of(mpfi_grid(B)), 0, 1, 0, 1, 0}};
+    for (int count = 0; !stack.empty(); ++count) {
+      const Piece P = stack.back();
+      stack.pop_back();
+      if (Rational(P.x0) >= sx0 && Rational(P.x1) <= sx1 && Rational(P.y0) >= sy0 && Rational(P.y1) <= sy1) continue;
+      const double rho = P.g->radius();
+      if ((a_ >= 1 && P.g->difference_sign(true, rho) != 0) || (b_ >= 1 && P.g->difference_sign(false, rho) != 0))
+        continue;
+      if (P.depth >= 16 || count > 4000) return false;
+      const bool along_u = (P.x1 - P.x0) * aspect >= (P.y1 - P.y0);
+      auto left = std::make_shared<Double_bernstein_grid>(a_, b_), right = std::make_shared<Double_bernstein_grid>(a_, b_);
+      P.g->split(along_u, 0.5, *left, *right);
+      work_ += double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+      const double xm = 0.5 * (P.x0 + P.x1), ym = 0.5 * (P.y0 + P.y1);
+      if (along_u) {
+        stack.push_back({left, P.x0, xm, P.y0, P.y1, P.depth + 1});
+        stack.push_back({right, xm, P.x1, P.y0, P.y1, P.depth + 1});
+      } else {
+        stack.push_back({left, P.x0, P.x1, P.y0, ym, P.depth + 1});
+        stack.push_back({right, P.x0, P.x1, ym, P.y1, P.depth + 1});
+      }
     }
     return true;
   }
@@ -1271,7 +1404,7 @@ class Subdivision_topology {
       const std::size_t want =
           touch != touch_.end()
               ? touch->second
-              : (on_domain_boundary(n) ? 1 : (keys_[n].singular ? (singular_[std::size_t(keys_[n].index)].isolated ? 0 : 4) : 2));
+              : (on_domain_boundary(n) ? 1 : (keys_[n].singular ? std::size_t(singular_[std::size_t(keys_[n].index)].half_branches) : 2));
       if (at[n].size() != want) {
         fail("inconsistent subdivision: a crossing joins " + std::to_string(at[n].size()) + " arcs");
         return false;
@@ -1388,6 +1521,7 @@ class Subdivision_topology {
   std::vector<Node_key> keys_;
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
+  std::vector<Multiple_point> multiple_;
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
   mutable std::map<int, std::vector<Integer>> binomials_;
   std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)

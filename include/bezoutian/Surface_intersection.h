@@ -17,6 +17,7 @@
 #include <bezoutian/Curve_topology_by_subdivision.h>
 #include <bezoutian/internal/certified_lifting.h>
 #include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/internal/matrix_zero_points.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -303,7 +304,9 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   int total = -1;
   for (int j = 0; j <= D.degree(); ++j)
     if (!CGAL::is_zero(D[j])) total = std::max(total, j + D[j].degree());
-  const Subdivision_topology_result sub = subdivide_curve_in_box(D, o.box, o.subdivision);
+  Subdivision_topology_options so = o.subdivision;
+  if (so.multiple_points.empty()) so.multiple_points = matrix_zero_points(L.equation, o.box);
+  const Subdivision_topology_result sub = subdivide_curve_in_box(D, o.box, so);
   if (sub.certified) {
     L.topology = sub.topology;
     L.topology_computed = true;

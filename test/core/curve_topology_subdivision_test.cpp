@@ -332,3 +332,89 @@ TEST_CASE("subdivision: degenerate singular points are not certified (the caller
   CHECK_THROWS_AS(subdivide_curve_in_box(P2(0), Parameter_box{}), Invalid_input);
   CHECK_THROWS_AS(subdivide_curve_in_box(u, box(Q(1), Q(0), Q(0), Q(1))), Invalid_input);
 }
+
+namespace {
+// [lo, hi] with lo < 1/sqrt(2) < hi and hi - lo = 2^-200
+std::pair<Q, Q> inverse_sqrt2_bracket() {
+  Integer s;
+  const Integer big = Integer(1) << 399;  // 2^200 / sqrt(2) = sqrt(2^399)
+  mpz_sqrt(s.mpz(), big.mpz());
+  const Q den(Integer(1) << 200);
+  return {Q(s) / den, Q(s + 1) / den};
+}
+std::size_t boundary_vertices(const Curve_topology_in_box& t) {
+  std::size_t n = 0;
+  for (const auto& x : t.vertices) n += x.on_boundary;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("subdivision: known triple points at irrational points are resolved by blowing them up",
+          "[topology][subdivision]") {
+  // x = 2u^2 - 1, y = 2v - 1: D = x^3 - 3 x y^2 = x (x - sqrt3 y)(x + sqrt3 y) has an ordinary triple point at
+  // (1/sqrt2, 1/2) with three real tangents: the line u = 1/sqrt2 (from v = 0 to v = 1) and the two curves
+  // 2u^2 - 1 = +-sqrt3 (2v - 1), from u = 0 to u = 1. In [0,1]^2: 6 boundary points, 6 arcs, one component.
+  const P2 x = 2 * u * u - 1, y = 2 * v - 1;
+  const P2 three = x * x * x - 3 * x * y * y;
+  const auto b = inverse_sqrt2_bracket();
+  const Known_multiple_point p{box(b.first, b.second, Q(1, 2), Q(1, 2)), 3};
+  CHECK_FALSE(subdivide_curve_in_box(three, Parameter_box{}).certified);  // the Morse analysis alone fails
+  Subdivision_topology_options o;
+  o.multiple_points = {p};
+  auto r = subdivide_curve_in_box(three, Parameter_box{}, o);
+  REQUIRE(r.certified);
+  const Curve_topology_in_box& t = r.topology;
+  REQUIRE(t.number_of_singular_points() == 1);
+  for (const auto& vx : t.vertices)
+    if (vx.kind == Curve_topology_vertex::singular) {
+      CHECK(vx.branches == 3);
+      CHECK(vx.half_branches == 6);
+      CHECK(vx.u_lo <= 0.70710678118654752);
+      CHECK(0.70710678118654752 <= vx.u_hi);
+      CHECK(vx.v == 0.5);
+    }
+  CHECK(boundary_vertices(t) == 6);
+  CHECK(t.edges.size() == 6);
+  CHECK(t.components.size() == 1);
+  check_samples(three, t, 1e-9);
+
+  // a small oval (radius 1/1000) next to the triple point, crossing no branch: a closed component of its own (a box
+  // around both must not be taken for the star of the triple point: the oval encloses an extremum of D)
+  const P2 oval = (10000 * u - 7111) * (10000 * u - 7111) + (10000 * v - 5000) * (10000 * v - 5000) - 100;
+  r = subdivide_curve_in_box(three * oval, Parameter_box{}, o);
+  REQUIRE(r.certified);
+  CHECK(r.topology.number_of_singular_points() == 1);
+  CHECK(r.topology.components.size() == 2);
+  CHECK(closed_components(r.topology) == 1);
+  CHECK(r.topology.edges.size() == 8);  // 6 arcs at the triple point, the oval as two edges
+
+  // one real tangent: x (x^2 + 3 y^2) is the line u = 1/sqrt2 alone, through a triple point (two complex
+  // branches): one branch, two arcs
+  const P2 one = x * (x * x + 3 * y * y);
+  r = subdivide_curve_in_box(one, Parameter_box{}, o);
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.number_of_singular_points() == 1);
+  for (const auto& vx : r.topology.vertices)
+    if (vx.kind == Curve_topology_vertex::singular) CHECK(vx.half_branches == 2);
+  CHECK(boundary_vertices(r.topology) == 2);
+  CHECK(r.topology.edges.size() == 2);
+  CHECK(r.topology.components.size() == 1);
+
+  // false claims are not believed: multiplicity 4 (an order-3 coefficient is nonzero), multiplicity 2 (the
+  // quadratic form vanishes: no tangent cone of degree 2) leave the point unresolved; a "multiple point" on a
+  // smooth part of the curve (on the line, at v = 3/10) is ignored and the true one still resolves
+  for (int wrong : {2, 4}) {
+    o.multiple_points = {Known_multiple_point{p.enclosure, wrong}};
+    r = subdivide_curve_in_box(three, Parameter_box{}, o);
+    CHECK_FALSE(r.certified);
+  }
+  o.multiple_points = {Known_multiple_point{box(b.first, b.second, Q(3, 10), Q(3, 10)), 3}, p};
+  r = subdivide_curve_in_box(three, Parameter_box{}, o);
+  REQUIRE(r.certified);
+  CHECK(r.topology.number_of_singular_points() == 1);
+  CHECK(r.topology.edges.size() == 6);
+  // the other triple point (-1/sqrt2, 1/2) lies outside the box: a box around both sees only the given one
+  // resolved; the other stops the subdivision
+  o.multiple_points = {p};
+  CHECK_FALSE(subdivide_curve_in_box(three, box(Q(-1), Q(1), Q(0), Q(1)), o).certified);
+}
