@@ -47,6 +47,17 @@
 // so every arc of D = 0 in B reaches the edges, and the four half-branches at a nondegenerate saddle use up the
 // four crossings. If D(p) is proved nonzero the box is split as usual; if D(p) = 0 can be neither proved nor
 // excluded, the result is not certified (with that reason).
+//
+// Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
+// order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their
+// Hessian vanishes, so (1)-(2) fail there. A box B with K strictly inside is resolved when
+//  (1') blowing p up (internal/multiple_point_blowup.h) proves that the degree-k form of the Taylor expansion
+//       has L real lines, all simple, so that the germ of D = 0 at p is 2L half-branches, and that grad D != 0
+//       on (p + [-r, r]^2) \ {p};
+//  (2') grad D != 0 on the rest of B: on every sub-box outside that square the Bernstein coefficients of D_u or
+//       of D_v keep a sign;
+//  (3') the exact crossings of D = 0 with the edges of B number 2L.
+// The argument above then gives the 2L arcs from p to the crossings (L = 0: p is an isolated point).
 #ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 #define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 

@@ -7,6 +7,7 @@
 
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
+#include <bezoutian/internal/matrix_zero_points.h>
 #include <bezoutian/io/Geometry_document.h>
 
 using namespace bezoutian;
@@ -80,6 +81,39 @@ TEST_CASE("worked example: three branches through the triple point near (-1.047,
       // shared/notes: (-1.0470947234032030127, -0.0488563631290503188)
       CHECK(x.u == Approx(-1.0470947234032030127).epsilon(1e-12));
       CHECK(x.v == Approx(-0.0488563631290503188).epsilon(1e-10));
+      CHECK(x.u_lo <= -1.0470947234032030127);
+      CHECK(-1.0470947234032030127 <= x.u_hi);
+    }
+  // The 3 x 3 Bezoutian matrix vanishes entirely at the triple point (so det B has multiplicity 3 there): its
+  // common zeros in the box are that point alone, and the subdivision resolves it by blowing it up, with the same
+  // topology as CGAL's whole-plane analysis above.
+  const auto zeros = internal::matrix_zero_points(e, box(Q(-11, 10), Q(-1), Q(-1, 10), Q(0)));
+  REQUIRE(zeros.size() == 1);
+  CHECK(zeros[0].multiplicity == 3);
+  CHECK(CGAL::to_double(zeros[0].enclosure.u0) == Approx(-1.0470947234032030127).epsilon(1e-15));
+  CHECK(CGAL::to_double(zeros[0].enclosure.v0) == Approx(-0.0488563631290503188).epsilon(1e-14));
+  for (const auto& row : e.matrix.entries)  // every entry is (nearly) zero at the enclosure's corner (width ~1e-87)
+    for (const auto& entry : row) {
+      Rational val(0);
+      for (int j = entry.degree(); j >= 0; --j) {
+        Rational c(0);
+        for (int i = entry[j].degree(); i >= 0; --i) c = c * zeros[0].enclosure.u0 + entry[j][i];
+        val = val * zeros[0].enclosure.v0 + c;
+      }
+      CHECK(CGAL::abs(val) < Q(1, Integer(1) << 200));
+    }
+  Subdivision_topology_options o;
+  o.multiple_points = zeros;
+  const auto s = subdivide_curve_in_box(e.square_free, box(Q(-11, 10), Q(-1), Q(-1, 10), Q(0)), o);
+  REQUIRE(s.certified);
+  CHECK(s.topology.vertices.size() == t.vertices.size());
+  CHECK(s.topology.edges.size() == t.edges.size());
+  CHECK(s.topology.components.size() == t.components.size());
+  CHECK(s.topology.number_of_boundary_points() == t.number_of_boundary_points());
+  REQUIRE(s.topology.number_of_singular_points() == 1);
+  for (const auto& x : s.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.branches == 3);
       CHECK(x.u_lo <= -1.0470947234032030127);
       CHECK(-1.0470947234032030127 <= x.u_hi);
     }

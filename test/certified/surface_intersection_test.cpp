@@ -29,6 +29,8 @@ TEST_CASE("worked example: triple point with three branches and three partners",
   o.partner_domain_unbounded = true;
   Surface_locus L = self_intersection_locus(doc.patches[0], o);
   CHECK(L.equation.matrix.size() == 3);
+  // the whole 3 x 3 matrix vanishes at the triple point: the subdivision resolves it (no whole-plane analysis)
+  CHECK(L.topology_method == "subdivision");
   REQUIRE(L.topology.number_of_singular_points() == 1);
   std::size_t sv = 0;
   for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)
