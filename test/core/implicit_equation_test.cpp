@@ -6,7 +6,11 @@
 #include "test_support.h"
 
 #include <bezoutian/Implicit_equation.h>
+#include <bezoutian/internal/matrix_zero_points.h>
 #include <bezoutian/io/Geometry_document.h>
+
+#include <random>
+#include <set>
 
 using namespace bezoutian;
 using Q = Rational;
@@ -67,4 +71,104 @@ TEST_CASE("identical patches give an identically zero determinant, reported as d
   Implicit_equation e = intersection_equation(phi, phi);
   CHECK(e.is_degenerate());
   CHECK(e.total_degree() == -1);
+}
+
+namespace {
+// Taylor coefficients of D at (x, y) up to total order 3, exactly: T[a][b] of (u - x)^a (v - y)^b
+std::vector<std::vector<Q>> taylor3(const Polynomial_2<Integer>& D, const Q& x, const Q& y) {
+  int A = 0;
+  for (int j = 0; j <= D.degree(); ++j) A = std::max(A, D[j].degree());
+  const int B = D.degree();
+  std::vector<std::vector<Q>> c(std::size_t(A + 1), std::vector<Q>(std::size_t(B + 1), Q(0)));
+  for (int j = 0; j <= B; ++j)
+    for (int i = 0; i <= D[j].degree(); ++i) c[i][j] = Q(D[j][i]);
+  for (int j = 0; j <= B; ++j)
+    for (int s = 0; s < A; ++s)
+      for (int i = A - 1; i >= s; --i) c[i][j] += x * c[i + 1][j];
+  for (int i = 0; i <= A; ++i)
+    for (int s = 0; s < B; ++s)
+      for (int j = B - 1; j >= s; --j) c[i][j] += y * c[i][j + 1];
+  return c;
+}
+}  // namespace
+
+TEST_CASE("the common zeros of the Bezoutian matrix are triple points of D (worked example)", "[implicit][seed]") {
+  auto doc = io::read_geometry_file(bezoutian_test::source_file("examples/data/bezoutian_worked_example.json"));
+  const Implicit_equation e = self_intersection_equation(doc.patches[0]);
+  const auto zeros = internal::matrix_zero_points(e, Parameter_box{Q(-3), Q(3), Q(-3), Q(3)});
+  REQUIRE(zeros.size() >= 1);
+  bool seed_point = false;
+  for (const auto& z : zeros) {
+    CHECK(z.multiplicity == 3);
+    const Q x = z.enclosure.u0, y = z.enclosure.v0;  // within ~1e-85 of the exact point
+    seed_point |= CGAL::abs(x - Q(-1.0470947234032030127)) < Q(1, 1000000000) &&
+                  CGAL::abs(y - Q(-0.0488563631290503188)) < Q(1, 1000000000);
+    // D, its gradient and its Hessian vanish there (up to the enclosure width), its cubic form does not
+    const auto T = taylor3(e.square_free, x, y);
+    Q cubic(0);
+    for (int a = 0; a <= 3; ++a) cubic = std::max(cubic, CGAL::abs(T[a][3 - a]));
+    REQUIRE(cubic > Q(1, 1000));
+    for (int a = 0; a <= 2; ++a)
+      for (int b = 0; a + b <= 2; ++b) CHECK(CGAL::abs(T[a][b]) < cubic * Q(1, Integer(1) << 150));
+  }
+  CHECK(seed_point);  // the triple point near (-1.047, -0.0489) of buse-elkadi-galligo-2008 §4
+
+  // huge inputs (31-bit rational coordinates and weights): the search gives up at once (documented), no hang
+  std::mt19937_64 g(7);
+  auto big = [&](bool positive) {
+    const Integer r(int(g() & 0x7fffffff));
+    return positive ? Q(r + 1) : ((g() & 1) ? Q(r) : Q(-r));
+  };
+  std::vector<std::vector<Patch::Point>> p(3, std::vector<Patch::Point>(3));
+  std::vector<std::vector<Q>> w(3, std::vector<Q>(3));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      p[i][j] = {big(false) / big(true), big(false) / big(true), big(false) / big(true)};
+      w[i][j] = big(true) / big(true);
+    }
+  const Implicit_equation h = self_intersection_equation(Patch(p, w));
+  CHECK(internal::matrix_zero_points(h, Parameter_box{}).empty());
+}
+
+TEST_CASE("a rational (2,2) patch with two triple points of D: the topology of CGAL's whole-plane analysis",
+          "[implicit][topology]") {
+  // the first (2,2) rational self-intersection of benchmark/surface_benchmark.cpp; {x, y, z, weight} by (i, j)
+  const int net[9][4] = {{4, -3, 5, 4},  {-3, 3, -1, 2}, {0, 2, 3, 2},  {0, 1, -5, 3}, {2, -1, -2, 4},
+                         {3, 4, 0, 4},   {3, -1, 4, 4},  {-1, 5, -3, 3}, {2, -5, 3, 4}};
+  std::vector<std::vector<Patch::Point>> p(3, std::vector<Patch::Point>(3));
+  std::vector<std::vector<Q>> w(3, std::vector<Q>(3));
+  for (int k = 0; k < 9; ++k) {
+    p[k / 3][k % 3] = {Q(net[k][0]), Q(net[k][1]), Q(net[k][2])};
+    w[k / 3][k % 3] = Q(net[k][3]);
+  }
+  const Implicit_equation e = self_intersection_equation(Patch(p, w));
+  REQUIRE(e.total_degree() == 20);
+  CHECK_FALSE(subdivide_curve_in_box(e.square_free, Parameter_box{}).certified);  // the triple points stop it
+  Subdivision_topology_options o;
+  o.multiple_points = internal::matrix_zero_points(e, Parameter_box{});
+  CHECK(o.multiple_points.size() == 2);
+  const auto r = subdivide_curve_in_box(e.square_free, Parameter_box{}, o);
+  REQUIRE(r.certified);
+  // expected values: CGAL's analyse_curve_in_box of the same D (476 s, recorded in doc/benchmarks.md)
+  const Curve_topology_in_box& t = r.topology;
+  REQUIRE(t.number_of_singular_points() == 2);
+  for (const auto& x : t.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      const bool first = std::fabs(x.u - 0.708088922700) < 1e-9;
+      CHECK((first || std::fabs(x.u - 0.719573145481) < 1e-9));
+      CHECK(x.v == Approx(first ? 0.023845482672 : 0.497816146857).margin(1e-9));
+      CHECK(x.branches == (first ? 3 : 1));
+    }
+  CHECK(t.number_of_boundary_points() == 8);
+  REQUIRE(t.components.size() == 3);
+  std::multiset<std::array<int, 3>> got, expected{{0, 2, 0}, {1, 0, 0}, {0, 6, 2}};  // closed, boundary, singular
+  for (const auto& c : t.components) {
+    std::array<int, 3> s{int(c.closed), 0, 0};
+    for (auto vi : c.vertices) {
+      s[1] += t.vertices[vi].on_boundary;
+      s[2] += t.vertices[vi].kind == Curve_topology_vertex::singular;
+    }
+    got.insert(s);
+  }
+  CHECK(got == expected);
 }
