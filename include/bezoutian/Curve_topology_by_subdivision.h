@@ -65,6 +65,7 @@
 #include <bezoutian/Error.h>
 #include <bezoutian/Root_isolation.h>
 #include <bezoutian/internal/double_bernstein_grid.h>
+#include <bezoutian/internal/double_double_bernstein.h>
 #include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/internal/multiple_point_blowup.h>
 #include <bezoutian/number_types.h>
@@ -184,6 +185,7 @@ class Subdivision_topology {
     Subdivision_topology_result res;
     root_grid_ = std::make_shared<Interval_grid>(a_, b_, prec_);
     bernstein_on_box(*root_grid_);
+    dd_root_ = double_double_of(*root_grid_, dd_scale_);
     Box root{box_.u0, box_.u1, box_.v0, box_.v1, 0, root_grid_, nullptr};
     root.fast = double_grid_of(*root_grid_);
     std::vector<Box> stack{root};
@@ -198,19 +200,29 @@ class Subdivision_topology {
         return res;
       }
       // Sign tests on the double grid (proved radius); when they decide nothing and the radius has grown large
-      // against the coefficients (deep boxes near the curve), the grid is recomputed from the exact-rounded
-      // MPFI grid of the domain and the tests repeated.
+      // against the coefficients (deep boxes near the curve), the grid is recomputed from the domain's grid in
+      // double-double arithmetic (proved error bound), or if that is not sharp enough from the exact-rounded
+      // MPFI grid of the domain, and the tests repeated.
       int excluded = B.fast->common_sign(B.fast->radius());
       bool dv = false, du = false;
       for (int attempt = 0; excluded == 0; ++attempt) {
         dv = b_ >= 1 && B.fast->difference_sign(false, B.fast->radius()) != 0;
         du = a_ >= 1 && B.fast->difference_sign(true, B.fast->radius()) != 0;
-        if (dv || du || attempt > 0 || B.grid || B.fast->precise()) break;
+        if (dv || du || attempt > 1 || B.grid || B.fast->precise()) break;
         // recompute only if the midpoints would decide (or the radius is so large that they mean little)
         if (B.fast->radius() <= std::ldexp(B.fast->max_abs(), -12) && B.fast->common_sign(0) == 0 &&
             (b_ < 1 || B.fast->difference_sign(false, 0) == 0) && (a_ < 1 || B.fast->difference_sign(true, 0) == 0))
           break;
-        B.fast = double_grid_of(mpfi_grid(B));
+        // first from the double-double grid of the domain (about 10 times cheaper), then if that is not sharp
+        // enough from the MPFI grid
+        if (attempt == 0 && dd_root_) {
+          work_ += double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_);
+          B.fast = dd_root_->restrict_to((B.u0 - box_.u0) / (box_.u1 - box_.u0), (B.u1 - box_.u0) / (box_.u1 - box_.u0),
+                                         (B.v0 - box_.v0) / (box_.v1 - box_.v0), (B.v1 - box_.v0) / (box_.v1 - box_.v0),
+                                         dd_scale_);
+        } else {
+          B.fast = double_grid_of(mpfi_grid(B));
+        }
         excluded = B.fast->common_sign(B.fast->radius());
       }
       if (excluded != 0) continue;
@@ -480,6 +492,48 @@ class Subdivision_topology {
     f->set_radius(rho);
     f->set_exponent(int(emax));
     f->rescale();
+    return f;
+  }
+
+  // The double-double form of an MPFI grid (internal/double_double_bernstein.h): midpoints split into hi + lo,
+  // scaled by 2^-scale; the error bound adds the interval radii and what the split drops.
+  std::shared_ptr<const Double_double_bernstein> double_double_of(const Interval_grid& g, int& scale) const {
+    auto f = std::make_shared<Double_double_bernstein>(a_, b_);
+    const mpfr_prec_t p = prec_ + 128;
+    mpfr_t mid, t, d;
+    mpfr_init2(mid, p);
+    mpfr_init2(t, p);
+    mpfr_init2(d, 64);
+    long emax = LONG_MIN;
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j)
+        for (mpfr_srcptr e : {&g.at(i, j)->left, &g.at(i, j)->right})
+          if (!mpfr_zero_p(e)) emax = std::max(emax, long(mpfr_get_exp(e)));
+    if (emax == LONG_MIN) return nullptr;
+    double err = 0, mag = 0;
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        mpfi_mid(mid, g.at(i, j));
+        mpfr_mul_2si(mid, mid, -emax, MPFR_RNDN);  // exact (a power of two)
+        const double hi = mpfr_get_d(mid, MPFR_RNDN);
+        mpfr_sub_d(t, mid, hi, MPFR_RNDN);  // exact at p bits
+        const double lo = mpfr_get_d(t, MPFR_RNDN);
+        mpfr_sub_d(t, t, lo, MPFR_RNDN);  // exact
+        double e = std::fabs(mpfr_get_d(t, MPFR_RNDU)) * 2;
+        // radius of the interval about its midpoint, in the scaled units, rounded up
+        mpfr_sub(d, &g.at(i, j)->right, &g.at(i, j)->left, MPFR_RNDU);
+        mpfr_mul_2si(d, d, -emax, MPFR_RNDU);
+        e += mpfr_get_d(d, MPFR_RNDU);
+        err = std::max(err, e);
+        mag = std::max(mag, std::fabs(hi) + std::fabs(lo));
+        f->at(i, j) = Double_double{hi, lo};
+      }
+    mpfr_clear(mid);
+    mpfr_clear(t);
+    mpfr_clear(d);
+    err = err * (1 + 1e-14) + 1e-300;
+    f->set_bounds(err, (mag + err) * (1 + 1e-14));
+    scale = int(emax);
     return f;
   }
 
@@ -1526,6 +1580,8 @@ class Subdivision_topology {
   long bits_ = 0;
   mpfr_prec_t prec_ = 256, root_prec_ = 256;
   std::shared_ptr<Interval_grid> root_grid_;  // Bernstein coefficients on the whole domain box
+  std::shared_ptr<const Double_double_bernstein> dd_root_;  // the same in double-double, scaled by 2^-dd_scale_
+  int dd_scale_ = 0;
   double work_ = 0;                           // budget used (see run())
   std::map<std::pair<bool, Rational>, Line> lines_;
   std::map<Node_key, std::size_t> nodes_;

@@ -2,6 +2,7 @@
 // radius: after any sequence of de Casteljau splits, every exact child coefficient lies in 2^e (m +- rho).
 // Checked against the same splits in exact rational arithmetic, on coefficients with a wide dynamic range.
 #include <bezoutian/internal/double_bernstein_grid.h>
+#include <bezoutian/internal/double_double_bernstein.h>
 #include <bezoutian/number_types.h>
 
 #include <catch2/catch.hpp>
@@ -147,4 +148,73 @@ TEST_CASE("double Bernstein grid: a positive polynomial is proved positive after
   CHECK(l.common_sign(l.radius()) == -1);
   CHECK(r.common_sign(r.radius()) == 0);
   CHECK(r.difference_sign(true, r.radius()) == 1);  // increasing: d/dx > 0
+}
+
+TEST_CASE("double-double Bernstein restriction: the proved radius encloses the exact sub-box coefficients",
+          "[subdivision]") {
+  using bezoutian::internal::Double_double;
+  using bezoutian::internal::Double_double_bernstein;
+  std::mt19937 g(2026);
+  std::uniform_int_distribution<int> digit(-1000000, 1000000);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int a = 3 + trial % 5, b = 2 + trial % 7;
+    // exact coefficients p / 2^40 with wide range: |c| <= 1/2 (the units of the double-double grid)
+    Exact_grid c(std::size_t(a + 1), std::vector<Rational>(std::size_t(b + 1)));
+    Double_double_bernstein dd(a, b);
+    for (int i = 0; i <= a; ++i)
+      for (int j = 0; j <= b; ++j) {
+        c[i][j] = Rational(digit(g)) / Rational(2000000) + Rational(digit(g)) / Rational(1 << 30) / Rational(1 << 30);
+        const double hi = CGAL::to_double(c[i][j]);
+        dd.at(i, j) = Double_double{hi, CGAL::to_double(c[i][j] - Rational(hi))};
+      }
+    Rational err_in(0);  // the representation error of the input, an upper bound for the grid's error
+    for (int i = 0; i <= a; ++i)
+      for (int j = 0; j <= b; ++j)
+        err_in = std::max(err_in, CGAL::abs(c[i][j] - Rational(dd.at(i, j).hi) - Rational(dd.at(i, j).lo)));
+    dd.set_bounds(CGAL::to_double(err_in) * 2 + 1e-300, 1.0);
+    // a deep sub-box with non-dyadic ends (as the subdivision's 15/31, 16/33 splits give)
+    Rational u0(trial + 1, 97), u1 = u0 + Rational(1, 31 * 31 * 31), v0(2 * trial + 3, 89), v1 = v0 + Rational(1, 33 * 33);
+    const auto f = dd.restrict_to(u0, u1, v0, v1, 0);
+    // exact restriction: [0, u1], then [u0/u1, 1] of it; the same in v
+    Exact_grid x = c, l, r;
+    exact_split(x, true, u1, l, r);
+    exact_split(l, true, u0 / u1, x, r);
+    x = r;
+    exact_split(x, false, v1, l, r);
+    exact_split(l, false, v0 / v1, x, r);
+    x = r;
+    CHECK(inside(x, *f));
+    const double worst = std::ldexp(f->radius(), f->exponent());
+    CHECK(worst <= std::ldexp(f->max_abs(), f->exponent() - 50));  // as sharp as a double grid can be
+  }
+  // Cancellation: (u - 1/3)(v - 2/7) on a sub-box of width ~1e-9 around its corner (1/3, 2/7): the sub-box
+  // coefficients are ~1e-18 of the domain's; the radius stays far below them (a double restriction would not:
+  // its error is ~1e-16 of the domain's coefficients), so the signs decide.
+  const int a = 7, b = 6;
+  Exact_grid c(std::size_t(a + 1), std::vector<Rational>(std::size_t(b + 1)));
+  Double_double_bernstein dd(a, b);
+  Rational err_in(0);
+  for (int i = 0; i <= a; ++i)
+    for (int j = 0; j <= b; ++j) {
+      c[i][j] = (Rational(i, a) - Rational(1, 3)) * (Rational(j, b) - Rational(2, 7));  // degree elevation
+      const double hi = CGAL::to_double(c[i][j]);
+      dd.at(i, j) = Double_double{hi, CGAL::to_double(c[i][j] - Rational(hi))};
+      err_in = std::max(err_in, CGAL::abs(c[i][j] - Rational(dd.at(i, j).hi) - Rational(dd.at(i, j).lo)));
+    }
+  dd.set_bounds(CGAL::to_double(err_in) * 2 + 1e-300, 1.0);
+  const Rational e9(1, 1000000000);
+  const Rational u0 = Rational(1, 3) - e9, u1 = Rational(1, 3) + 2 * e9, v0 = Rational(2, 7) + e9,
+                 v1 = Rational(2, 7) + 3 * e9;
+  const auto f = dd.restrict_to(u0, u1, v0, v1, 0);
+  Exact_grid x = c, l, r;
+  exact_split(x, true, u1, l, r);
+  exact_split(l, true, u0 / u1, x, r);
+  x = r;
+  exact_split(x, false, v1, l, r);
+  exact_split(l, false, v0 / v1, x, r);
+  x = r;
+  CHECK(inside(x, *f));
+  CHECK(f->precise());
+  CHECK(std::ldexp(f->max_abs(), f->exponent()) < 1e-16);
+  CHECK(f->difference_sign(true, f->radius()) == 1);  // dD/du = v - 2/7 > 0 on the sub-box (a tiny positive)
 }
