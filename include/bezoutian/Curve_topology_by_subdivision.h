@@ -1195,8 +1195,10 @@ class Subdivision_topology {
           if (!(n2 > 0)) break;
           const long double nx = px - j[0] * j[1] / n2, ny = py - j[0] * j[2] / n2;
           if (!(nx >= 0 && nx <= 1 && ny >= 0 && ny <= 1)) break;
+          const bool converged = std::fabs(nx - px) + std::fabs(ny - py) < 1e-17L;
           px = nx;
           py = ny;
+          if (converged) break;
         }
         arc.inner.push_back({CGAL::to_double(B.u0) + double(px) * CGAL::to_double(wu),
                              CGAL::to_double(B.v0) + double(py) * CGAL::to_double(wv)});
