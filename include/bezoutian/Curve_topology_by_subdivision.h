@@ -495,6 +495,31 @@ class Subdivision_topology {
     return f;
   }
 
+  // An interval grid of B from the double-double restriction of the domain's grid: [hi + lo - E, hi + lo + E]
+  // times 2^dd_scale_ (outward rounded; a valid enclosure, less sharp than the MPFI restriction), or null.
+  std::shared_ptr<const Interval_grid> dd_interval_grid(const Box& B) {
+    if (!dd_root_) return nullptr;
+    std::vector<Double_double> v;
+    double E = 0;
+    dd_root_->restrict_values((B.u0 - box_.u0) / (box_.u1 - box_.u0), (B.u1 - box_.u0) / (box_.u1 - box_.u0),
+                              (B.v0 - box_.v0) / (box_.v1 - box_.v0), (B.v1 - box_.v0) / (box_.v1 - box_.v0), v, E);
+    work_ += double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_);
+    auto g = std::make_shared<Interval_grid>(a_, b_, prec_);
+    mpfi_t e;
+    mpfi_init2(e, 64);
+    mpfi_interv_d(e, -E, E);
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        const Double_double& x = v[std::size_t(i) * (b_ + 1) + j];
+        mpfi_set_d(g->at(i, j), x.hi);
+        mpfi_add_d(g->at(i, j), g->at(i, j), x.lo);
+        mpfi_add(g->at(i, j), g->at(i, j), e);
+        mpfi_mul_2si(g->at(i, j), g->at(i, j), dd_scale_);
+      }
+    mpfi_clear(e);
+    return g;
+  }
+
   // The double-double form of an MPFI grid (internal/double_double_bernstein.h): midpoints split into hi + lo,
   // scaled by 2^-scale; the error bound adds the interval radii and what the split drops.
   std::shared_ptr<const Double_double_bernstein> double_double_of(const Interval_grid& g, int& scale) const {
@@ -1111,66 +1136,79 @@ class Subdivision_topology {
             !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
           return false;
     if (cr.size() != (extremum ? 0u : 4u)) return false;
-    // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B
-    const Interval_grid& g = mpfi_grid(B);
-    const double r0 = 1e-7;
-    std::array<I, 2> X{I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
-                       I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
-    auto value = [&](const std::array<I, 2>& c, std::array<I, 2>& F) {
-      F[0] = grid_value(g, 1, 0, c[0], c[1]);
-      F[1] = grid_value(g, 0, 1, c[0], c[1]);
-    };
-    auto jacobian = [&](const std::array<I, 2>& Z, std::vector<std::vector<I>>& J) {
-      J[0][0] = grid_value(g, 2, 0, Z[0], Z[1]);
-      J[0][1] = grid_value(g, 1, 1, Z[0], Z[1]);
-      J[1][0] = J[0][1];
-      J[1][1] = grid_value(g, 0, 2, Z[0], Z[1]);
-    };
-    if (!krawczyk_prove<2>(X, value, jacobian)) return false;
-    // contract (quadratically: the Hessian is enclosed on the current box) until D(X) excludes 0 or the
-    // enclosure stops shrinking (the working precision is reached)
-    bool off_curve = false;
-    for (int round = 0; round < 64; ++round) {
-      if (!grid_value(g, 0, 0, X[0], X[1]).contains_zero()) {
-        off_curve = true;
-        break;
+    // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B: first on
+    // an interval grid from the double-double restriction (cheap), then, if that does not decide (Krawczyk's test
+    // fails, or D(p) is proved neither zero nor nonzero), on the exact-rounded MPFI grid of B
+    std::shared_ptr<const Interval_grid> cheap = B.grid ? nullptr : dd_interval_grid(B);
+    bool witness_failed = false;
+    for (int pass = cheap ? 0 : 1; pass < 2; ++pass) {
+      const Interval_grid& g = pass == 0 ? *cheap : mpfi_grid(B);
+      const double r0 = 1e-7;
+      std::array<I, 2> X{I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
+                         I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
+      auto value = [&](const std::array<I, 2>& c, std::array<I, 2>& F) {
+        F[0] = grid_value(g, 1, 0, c[0], c[1]);
+        F[1] = grid_value(g, 0, 1, c[0], c[1]);
+      };
+      auto jacobian = [&](const std::array<I, 2>& Z, std::vector<std::vector<I>>& J) {
+        J[0][0] = grid_value(g, 2, 0, Z[0], Z[1]);
+        J[0][1] = grid_value(g, 1, 1, Z[0], Z[1]);
+        J[1][0] = J[0][1];
+        J[1][1] = grid_value(g, 0, 2, Z[0], Z[1]);
+      };
+      if (!krawczyk_prove<2>(X, value, jacobian)) {
+        if (pass == 0) continue;
+        return false;
       }
-      const double w0 = X[0].width_double() + X[1].width_double();
-      if (!krawczyk_prove<2>(X, value, jacobian)) break;
-      if (!(X[0].width_double() + X[1].width_double() < 0.5 * w0)) break;
+      // contract (quadratically: the Hessian is enclosed on the current box) until D(X) excludes 0 or the
+      // enclosure stops shrinking (the working precision is reached)
+      bool off_curve = false;
+      for (int round = 0; round < 64; ++round) {
+        if (!grid_value(g, 0, 0, X[0], X[1]).contains_zero()) {
+          off_curve = true;
+          break;
+        }
+        const double w0 = X[0].width_double() + X[1].width_double();
+        if (!krawczyk_prove<2>(X, value, jacobian)) break;
+        if (!(X[0].width_double() + X[1].width_double() < 0.5 * w0)) break;
+      }
+      if (!X[0].strictly_inside(I::hull(Rational(0), Rational(1), prec_)) ||
+          !X[1].strictly_inside(I::hull(Rational(0), Rational(1), prec_)))
+        return false;
+      const Parameter_box K{B.u0 + wu * X[0].lower(), B.u0 + wu * X[0].upper(), B.v0 + wv * X[1].lower(),
+                            B.v0 + wv * X[1].upper()};
+      // (3) D(p): nonzero (the box is split as usual), or zero by an exact rational point or the witness
+      if (off_curve) {
+        off_curve_.push_back(K);
+        return false;
+      }
+      bool zero_proved = false;
+      Rational ru, rv;
+      if (simplest_rational(K.u0, K.u1, ru) && simplest_rational(K.v0, K.v1, rv)) {
+        const auto e = exact_jet(ru, rv);
+        zero_proved = CGAL::is_zero(e[0]) && CGAL::is_zero(e[1]) && CGAL::is_zero(e[2]);
+      }
+      if (!zero_proved && o_.singular_point_witness && !witness_failed) {
+        zero_proved = o_.singular_point_witness(Parameter_box{B.u0, B.u1, B.v0, B.v1}, approx);
+        witness_failed = !zero_proved;
+      }
+      if (!zero_proved && pass == 0) continue;  // the exact-rounded grid may prove D(p) != 0
+      if (!zero_proved && o_.no_genuine_points && B.depth < undecided_depth) {  // it may yet be excluded as phantom
+        undecided_.push_back(K);
+        return false;
+      }
+      if (!zero_proved) {
+        fail("D has a nondegenerate critical point at (" + std::to_string(approx[0]) + ", " + std::to_string(approx[1]) +
+             ") where |D| is below the interval resolution; D = 0 there (a node or an isolated point) could not be "
+             "proved");
+        return false;
+      }
+      singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum, extremum ? 0 : 4});
+      for (std::size_t n : isolated_corners) touch_[n] = 0;
+      connect_to_point(B, cr, node_singular(singular_.size() - 1), x, y);
+      return true;
     }
-    if (!X[0].strictly_inside(I::hull(Rational(0), Rational(1), prec_)) ||
-        !X[1].strictly_inside(I::hull(Rational(0), Rational(1), prec_)))
-      return false;
-    const Parameter_box K{B.u0 + wu * X[0].lower(), B.u0 + wu * X[0].upper(), B.v0 + wv * X[1].lower(),
-                          B.v0 + wv * X[1].upper()};
-    // (3) D(p): nonzero (the box is split as usual), or zero by an exact rational point or the witness
-    if (off_curve) {
-      off_curve_.push_back(K);
-      return false;
-    }
-    bool zero_proved = false;
-    Rational ru, rv;
-    if (simplest_rational(K.u0, K.u1, ru) && simplest_rational(K.v0, K.v1, rv)) {
-      const auto e = exact_jet(ru, rv);
-      zero_proved = CGAL::is_zero(e[0]) && CGAL::is_zero(e[1]) && CGAL::is_zero(e[2]);
-    }
-    if (!zero_proved && o_.singular_point_witness)
-      zero_proved = o_.singular_point_witness(Parameter_box{B.u0, B.u1, B.v0, B.v1}, approx);
-    if (!zero_proved && o_.no_genuine_points && B.depth < undecided_depth) {  // it may yet be excluded as phantom
-      undecided_.push_back(K);
-      return false;
-    }
-    if (!zero_proved) {
-      fail("D has a nondegenerate critical point at (" + std::to_string(approx[0]) + ", " + std::to_string(approx[1]) +
-           ") where |D| is below the interval resolution; D = 0 there (a node or an isolated point) could not be "
-           "proved");
-      return false;
-    }
-    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, extremum, extremum ? 0 : 4});
-    for (std::size_t n : isolated_corners) touch_[n] = 0;
-    connect_to_point(B, cr, node_singular(singular_.size() - 1), x, y);
-    return true;
+    return false;
   }
 
   // The arcs of D = 0 in B from each crossing to the singular point p at local coordinates (x, y) of B, with

@@ -71,15 +71,9 @@ class Double_double_bernstein {
   /// is the power of two of this grid's units.
   std::shared_ptr<Double_bernstein_grid> restrict_to(const Rational& u0, const Rational& u1, const Rational& v0,
                                                      const Rational& v1, int scale) const {
-    std::vector<Double_double> g = c_;
-    double E = E_;
-    for (int pass = 0; pass < 2; ++pass) {
-      const bool along_u = pass == 0;
-      const Rational& lo = along_u ? u0 : v0;
-      const Rational& hi = along_u ? u1 : v1;
-      if (hi < Rational(1)) casteljau(g, along_u, hi, true, E);       // keep [0, hi]
-      if (lo > Rational(0)) casteljau(g, along_u, lo / hi, false, E);  // then [lo / hi, 1] of that
-    }
+    std::vector<Double_double> g;
+    double E = 0;
+    restrict_values(u0, u1, v0, v1, g, E);
     auto f = std::make_shared<Double_bernstein_grid>(a_, b_);
     double lo_max = 0;
     for (int i = 0; i <= a_; ++i)
@@ -93,6 +87,21 @@ class Double_double_bernstein {
     f->set_exponent(scale);
     f->rescale();
     return f;
+  }
+
+  /// The double-double coefficients g (row-major, (a+1) x (b+1)) on the same sub-box, each within E of the exact
+  /// one (in this grid's units).
+  void restrict_values(const Rational& u0, const Rational& u1, const Rational& v0, const Rational& v1,
+                       std::vector<Double_double>& g, double& E) const {
+    g = c_;
+    E = E_;
+    for (int pass = 0; pass < 2; ++pass) {
+      const bool along_u = pass == 0;
+      const Rational& lo = along_u ? u0 : v0;
+      const Rational& hi = along_u ? u1 : v1;
+      if (hi < Rational(1)) casteljau(g, along_u, hi, true, E);       // keep [0, hi]
+      if (lo > Rational(0)) casteljau(g, along_u, lo / hi, false, E);  // then [lo / hi, 1] of that
+    }
   }
 
  private:
