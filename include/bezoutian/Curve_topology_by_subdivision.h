@@ -1126,15 +1126,8 @@ class Subdivision_topology {
         if (e.contains(approx[0], approx[1])) return false;
     // (4) the crossings with the edges of B
     std::vector<Crossing> cr;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
-      return false;
     std::vector<std::size_t> isolated_corners;
-    for (const Rational* cu : {&B.u0, &B.u1})
-      for (const Rational* cv : {&B.v0, &B.v1})
-        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
-          return false;
+    if (!crossings_around(B, cr, isolated_corners)) return false;
     if (cr.size() != (extremum ? 0u : 4u)) return false;
     // (2) Krawczyk on grad D in local coordinates, around Newton's point, with the Hessian ranges of B: first on
     // an interval grid from the double-double restriction (cheap), then, if that does not decide (Krawczyk's test
@@ -1209,6 +1202,20 @@ class Subdivision_topology {
       return true;
     }
     return false;
+  }
+
+  // The exact crossings of D = 0 with the four edges of B around a point inside it (sorted by u on horizontal
+  // edges), with the domain corners among B's corners; false if an edge or a corner cannot be handled.
+  bool crossings_around(const Box& B, std::vector<Crossing>& cr, std::vector<std::size_t>& isolated_corners) {
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+      return false;
+    for (const Rational* cu : {&B.u0, &B.u1})
+      for (const Rational* cv : {&B.v0, &B.v1})
+        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
+            !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
+          return false;
+    return true;
   }
 
   // The arcs of D = 0 in B from each crossing to the singular point p at local coordinates (x, y) of B, with
@@ -1288,15 +1295,8 @@ class Subdivision_topology {
     }
     if (lines < 0) return false;
     std::vector<Crossing> cr;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
-      return false;
     std::vector<std::size_t> isolated_corners;
-    for (const Rational* cu : {&B.u0, &B.u1})
-      for (const Rational* cv : {&B.v0, &B.v1})
-        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
-          return false;
+    if (!crossings_around(B, cr, isolated_corners)) return false;
     if (cr.size() != 2 * std::size_t(lines)) return false;
     if (!no_critical_point_outside(B, Parameter_box{K.u1 - r, K.u0 + r, K.v1 - r, K.v0 + r})) return false;
     singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, lines == 0, 2 * lines});

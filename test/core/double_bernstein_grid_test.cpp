@@ -38,6 +38,17 @@ void exact_split(const Exact_grid& g, bool along_u, const Rational& r, Exact_gri
   }
 }
 
+// exact restriction to [u0, u1] x [v0, v1]: [0, u1], then [u0/u1, 1] of it; the same in v
+Exact_grid exact_restriction(const Exact_grid& c, const Rational& u0, const Rational& u1, const Rational& v0,
+                             const Rational& v1) {
+  Exact_grid x = c, l, r;
+  exact_split(x, true, u1, l, r);
+  exact_split(l, true, u0 / u1, x, r);
+  exact_split(r, false, v1, l, x);
+  exact_split(l, false, v0 / v1, x, r);
+  return r;
+}
+
 // the exact coefficient minus 2^e m, compared with 2^e rho
 bool inside(const Exact_grid& x, const Double_bernstein_grid& f) {
   const Rational scale = f.exponent() >= 0 ? Rational(bezoutian::Integer(1) << f.exponent())
@@ -175,14 +186,7 @@ TEST_CASE("double-double Bernstein restriction: the proved radius encloses the e
     // a deep sub-box with non-dyadic ends (as the subdivision's 15/31, 16/33 splits give)
     Rational u0(trial + 1, 97), u1 = u0 + Rational(1, 31 * 31 * 31), v0(2 * trial + 3, 89), v1 = v0 + Rational(1, 33 * 33);
     const auto f = dd.restrict_to(u0, u1, v0, v1, 0);
-    // exact restriction: [0, u1], then [u0/u1, 1] of it; the same in v
-    Exact_grid x = c, l, r;
-    exact_split(x, true, u1, l, r);
-    exact_split(l, true, u0 / u1, x, r);
-    x = r;
-    exact_split(x, false, v1, l, r);
-    exact_split(l, false, v0 / v1, x, r);
-    x = r;
+    const Exact_grid x = exact_restriction(c, u0, u1, v0, v1);
     CHECK(inside(x, *f));
     const double worst = std::ldexp(f->radius(), f->exponent());
     CHECK(worst <= std::ldexp(f->max_abs(), f->exponent() - 50));  // as sharp as a double grid can be
@@ -206,13 +210,7 @@ TEST_CASE("double-double Bernstein restriction: the proved radius encloses the e
   const Rational u0 = Rational(1, 3) - e9, u1 = Rational(1, 3) + 2 * e9, v0 = Rational(2, 7) + e9,
                  v1 = Rational(2, 7) + 3 * e9;
   const auto f = dd.restrict_to(u0, u1, v0, v1, 0);
-  Exact_grid x = c, l, r;
-  exact_split(x, true, u1, l, r);
-  exact_split(l, true, u0 / u1, x, r);
-  x = r;
-  exact_split(x, false, v1, l, r);
-  exact_split(l, false, v0 / v1, x, r);
-  x = r;
+  const Exact_grid x = exact_restriction(c, u0, u1, v0, v1);
   CHECK(inside(x, *f));
   CHECK(f->precise());
   CHECK(std::ldexp(f->max_abs(), f->exponent()) < 1e-16);
