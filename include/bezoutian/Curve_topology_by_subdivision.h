@@ -58,6 +58,9 @@
 //       of D_v keep a sign;
 //  (3') the exact crossings of D = 0 with the edges of B number 2L.
 // The argument above then gives the 2L arcs from p to the crossings (L = 0: p is an isolated point).
+// Multiple points at small rationals are found without the caller: from depth 8 on, a box that resists the
+// other tests tries the simplest rational point inside it (denominators below 2^20); if D's exact Taylor
+// coefficients there vanish below some order k >= 3, the point is added as a known multiple point.
 #ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 #define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 
@@ -240,6 +243,10 @@ class Subdivision_topology {
         const int m = multiple_point_in(B);
         if (m >= 0 && resolve_multiple(B, std::size_t(m))) continue;
         if (!failed_ && resolve_singular(B)) continue;
+        if (!failed_ && m < 0 && B.depth >= rational_multiple_depth) {  // a multiple point at a small rational?
+          const int r = rational_multiple_point(B);
+          if (r >= 0 && resolve_multiple(B, std::size_t(r))) continue;
+        }
       }
       if (failed_) {
         res.reason = failure_;
@@ -1259,6 +1266,43 @@ class Subdivision_topology {
     bool refuted;  // a coefficient of order < multiplicity is proved nonzero: the point is ignored
   };
 
+  // A multiple point of D (order >= 3) at the simplest rational point of B (denominators below 2^20), proved by
+  // exact Taylor coefficients, added to the known multiple points; its index, or -1. Symmetric and constructed
+  // inputs put such points at small rationals (three lines through (1/2, 1/2)); each point is tested once.
+  int rational_multiple_point(const Box& B) {
+    Rational ru, rv;
+    if (!simplest_rational(B.u0, B.u1, ru) || !simplest_rational(B.v0, B.v1, rv)) return -1;
+    if (ru.denominator().bit_size() > 20 || rv.denominator().bit_size() > 20) return -1;
+    if (!(B.u0 < ru && ru < B.u1 && B.v0 < rv && rv < B.v1)) return -1;
+    if (!rational_points_tested_.insert(std::make_pair(ru, rv)).second) return -1;
+    const int max_order = std::min(8, a_ + b_);
+    for (int order = 0; order <= max_order; ++order)
+      for (int i = 0; i <= order; ++i)
+        if (!CGAL::is_zero(taylor_coefficient(ru, rv, i, order - i))) {
+          if (order < 3) return -1;  // not on the curve, smooth, or a double point (resolve_singular's case)
+          multiple_.push_back(Multiple_point{Known_multiple_point{Parameter_box{ru, ru, rv, rv}, order}, nullptr, false});
+          return int(multiple_.size()) - 1;
+        }
+    return -1;
+  }
+  // The coefficient of (u - ru)^i (v - rv)^j in D, exactly.
+  Rational taylor_coefficient(const Rational& ru, const Rational& rv, int i, int j) const {
+    if (i > a_ || j > b_) return Rational(0);
+    Rational r(0);
+    for (int J = D_.degree(); J >= j; --J) {  // Horner in rv over the j-th Taylor coefficients in v
+      Rational c(0);
+      if (!CGAL::is_zero(D_[J]))
+        for (int I = D_[J].degree(); I >= i; --I) c = c * ru + Rational(D_[J][I] * binomial(I, i));
+      r = r * rv + c * Rational(binomial(J, j));
+    }
+    return r;
+  }
+  static Integer binomial(int n, int k) {
+    Integer r(1);
+    for (int t = 1; t <= k; ++t) r = r * Integer(n - k + t) / Integer(t);
+    return r;
+  }
+
   // The known multiple point whose enclosure lies strictly inside B, or -1.
   int multiple_point_in(const Box& B) const {
     for (std::size_t m = 0; m < multiple_.size(); ++m) {
@@ -1629,6 +1673,8 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Multiple_point> multiple_;
+  std::set<std::pair<Rational, Rational>> rational_points_tested_;
+  static constexpr int rational_multiple_depth = 8;  // from this depth on, boxes look for rational multiple points
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
   mutable std::map<int, std::vector<Integer>> binomials_;
   std::vector<Parameter_box> undecided_;  // boxes of critical points p where D(p) = 0 was not proved (yet)
@@ -1651,6 +1697,10 @@ inline Subdivision_topology_result subdivide_curve_in_box(const Polynomial_2<Int
                                                          const Subdivision_topology_options& o = {}) {
   if (CGAL::is_zero(D)) throw Invalid_input("subdivide_curve_in_box: the polynomial is identically zero");
   if (!(box.u0 < box.u1) || !(box.v0 < box.v1)) throw Invalid_input("subdivide_curve_in_box: empty box");
+  for (const Known_multiple_point& m : o.multiple_points)
+    if (m.enclosure.u1 < m.enclosure.u0 || m.enclosure.v1 < m.enclosure.v0 || m.multiplicity < 2)
+      throw Invalid_input("subdivide_curve_in_box: a known multiple point needs a nonempty enclosure and a "
+                          "multiplicity of at least 2");
   return internal::Subdivision_topology(D, box, o).run();
 }
 
