@@ -166,13 +166,28 @@ TEST_CASE("subdivision: curves tangent to a domain edge, from inside and from ou
   CHECK(r.topology.number_of_boundary_points() == 2);
 }
 
+namespace {
+// the vertex exactly at the domain corner (cu, cv), or null
+const Curve_topology_vertex* corner_vertex(const Curve_topology_in_box& t, double cu, double cv) {
+  for (const auto& x : t.vertices)
+    if (x.u_lo == cu && x.u_hi == cu && x.v_lo == cv && x.v_hi == cv) return &x;
+  return nullptr;
+}
+// the only component is the domain corner (cu, cv) alone: an isolated point on the boundary
+void check_isolated_corner(const Subdivision_topology_result& r, double cu, double cv, bool tangent) {
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.components.size() == 1);
+  CHECK(r.topology.components[0].isolated_point);
+  const Curve_topology_vertex* c = corner_vertex(r.topology, cu, cv);
+  REQUIRE(c != nullptr);
+  CHECK(c->kind == Curve_topology_vertex::isolated);
+  CHECK(c->on_boundary);
+  CHECK(c->tangent_to_boundary == tangent);
+}
+}  // namespace
+
 TEST_CASE("subdivision: curves tangent to a domain edge at a domain corner, and curves touching a corner only",
           "[topology][subdivision]") {
-  auto corner_vertex = [](const Curve_topology_in_box& t, double cu, double cv) -> const Curve_topology_vertex* {
-    for (const auto& x : t.vertices)
-      if (x.u_lo == cu && x.u_hi == cu && x.v_lo == cv && x.v_hi == cv) return &x;
-    return nullptr;
-  };
   // u = 1 - (v - 1)^2 / 2: tangent to the edge u = 1 at the corner (1, 1) and inside the square below it; one arc
   // from that corner to (1/2, 0)
   const P2 in_right = 2 * (u - 1) + (v - 1) * (v - 1);
@@ -190,13 +205,7 @@ TEST_CASE("subdivision: curves tangent to a domain edge at a domain corner, and 
   check_samples(in_right, r.topology, 1e-12);
   // u = 1 + (v - 1)^2 / 2: the same contact from outside; only the corner is in the square, an isolated point
   r = subdivide_curve_in_box(2 * (u - 1) - (v - 1) * (v - 1), Parameter_box{});
-  REQUIRE(r.certified);
-  REQUIRE(r.topology.components.size() == 1);
-  CHECK(r.topology.components[0].isolated_point);
-  c = corner_vertex(r.topology, 1, 1);
-  REQUIRE(c != nullptr);
-  CHECK(c->kind == Curve_topology_vertex::isolated);
-  CHECK(c->tangent_to_boundary);
+  check_isolated_corner(r, 1, 1, true);
   // v = u^2 / 3: tangent to the edge v = 0 at the corner (0, 0); one arc to (1, 1/3)
   const P2 in_bottom = 3 * v - u * u;
   r = subdivide_curve_in_box(in_bottom, Parameter_box{});
@@ -210,14 +219,7 @@ TEST_CASE("subdivision: curves tangent to a domain edge at a domain corner, and 
   check_samples(in_bottom, r.topology, 1e-12);
   // u + v = 0 crosses the corner (0, 0) transversally from outside: the corner alone, not a tangency
   r = subdivide_curve_in_box(u + v, Parameter_box{});
-  REQUIRE(r.certified);
-  REQUIRE(r.topology.components.size() == 1);
-  CHECK(r.topology.components[0].isolated_point);
-  c = corner_vertex(r.topology, 0, 0);
-  REQUIRE(c != nullptr);
-  CHECK(c->kind == Curve_topology_vertex::isolated);
-  CHECK(c->on_boundary);
-  CHECK_FALSE(c->tangent_to_boundary);
+  check_isolated_corner(r, 0, 0, false);
   // v = (2u - 1)^2 crosses the corners (0, 1) and (1, 1) transversally (and touches v = 0 at (1/2, 0) from inside)
   r = subdivide_curve_in_box(v - (2 * u - 1) * (2 * u - 1), Parameter_box{});
   REQUIRE(r.certified);
