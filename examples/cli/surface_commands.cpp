@@ -49,6 +49,11 @@ std::string text(const bezoutian::Integer& z) {
   return s.str();
 }
 
+std::string text(const bezoutian::Rational& q) {
+  const bezoutian::Integer d = q.denominator();
+  return d == 1 ? text(q.numerator()) : text(q.numerator()) + "/" + text(d);
+}
+
 nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   using nlohmann::json;
   json j;
@@ -132,6 +137,31 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                           {"point", {c.point[0], c.point[1], c.point[2]}}});
     j["contacts"] = contacts;
   }
+  // where genuine parts of arcs end inside the box (the partner reaches the partner domain's boundary): a traced
+  // point of its component (points[point_index]) and a box proved to hold exactly one such crossing
+  json splits = json::array();
+  for (const auto& sp : L.split_points) {
+    std::size_t component = 0, offset = 0;
+    for (std::size_t ci = 0; ci < T.components.size(); ++ci) {
+      std::size_t off = 0;
+      for (std::size_t ei : T.components[ci].edges) {
+        if (ei == sp.arc) component = ci, offset = off;
+        off += L.arcs[ei].points.size();
+      }
+    }
+    const auto& q = L.arcs[sp.arc].points[sp.index];
+    const char* names[2][2] = {{"u", "v"}, {L.self_intersection ? "u" : "s", L.self_intersection ? "v" : "t"}};
+    splits.push_back({{"component", component},
+                      {"point_index", offset + sp.index},
+                      {"u", q.projection[0]},
+                      {"v", q.projection[1]},
+                      {"box", {{sp.box[0][0], sp.box[0][1]}, {sp.box[1][0], sp.box[1][1]}}},
+                      {"partner_box", {{sp.box[2][0], sp.box[2][1]}, {sp.box[3][0], sp.box[3][1]}}},
+                      {"boundary", {{"point", sp.point == 0 ? "first" : "second"},
+                                    {"parameter", names[sp.point][sp.coordinate]},
+                                    {"value", text(sp.bound)}}}});
+  }
+  j["split_points"] = splits;
   j["partner_variables"] = L.self_intersection ? json{"l", "k"} : json{"v", "s"};
   j["lifting"] = "floating point along certified arcs (see doc/surface_intersection.md)";
   j["seconds"] = seconds;
@@ -153,7 +183,9 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
     << "' fill='none' stroke='black'/>\n";
   s << "<text x='" << pad << "' y='" << pad - 12 << "' font-size='11' font-family='sans-serif'>"
     << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
-    << "," << u1 << "]x[" << v0 << "," << v1 << "]; dashed grey: phantom; grey boxes: proved free of genuine points</text>\n";
+    << "," << u1 << "]x[" << v0 << "," << v1 << "]</text>\n";
+  s << "<text x='" << pad << "' y='" << pad - 2 << "' font-size='11' font-family='sans-serif'>dashed grey: phantom; "
+    << "grey boxes: proved free of genuine points; green diamonds: a genuine part ends (certified)</text>\n";
   for (const auto& b : L.topology.excluded_regions)  // proved free of genuine points: hatched grey
     s << "<rect x='" << X(CGAL::to_double(b.u0)) << "' y='" << Y(CGAL::to_double(b.v1)) << "' width='"
       << X(CGAL::to_double(b.u1)) - X(CGAL::to_double(b.u0)) << "' height='"
@@ -178,6 +210,12 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
         << " branches (" << v.u << ", " << v.v << ")</text>\n";
     if (v.on_boundary)
       s << "<rect x='" << X(v.u) - 4 << "' y='" << Y(v.v) - 4 << "' width='8' height='8' fill='blue'/>\n";
+  }
+  for (const auto& sp : L.split_points) {  // where a genuine part ends inside the box: a green diamond
+    const auto& q = L.arcs[sp.arc].points[sp.index];
+    const double x = X(q.projection[0]), y = Y(q.projection[1]);
+    s << "<polygon points='" << x << "," << y - 6 << " " << x + 6 << "," << y << " " << x << "," << y + 6 << " "
+      << x - 6 << "," << y << "' fill='#2ca02c' stroke='black'/>\n";
   }
   s << "</svg>\n";
 }
@@ -268,6 +306,10 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << " traced points with partner in the domain (" << proved << "/" << total
               << " genuine/phantom status proved), max residual " << worst << "\n";
   }
+  if (!L.split_points.empty())
+    std::cout << "  " << L.split_points.size()
+              << " certified split point(s): genuine parts end inside the box where the partner reaches the domain's "
+                 "boundary\n";
   const auto old_precision = std::cout.precision(17);
   for (std::size_t vi = 0; vi < T.vertices.size(); ++vi) {
     const auto& v = T.vertices[vi];

@@ -18,6 +18,7 @@
 #include <bezoutian/internal/certified_lifting.h>
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/internal/matrix_zero_points.h>
+#include <bezoutian/internal/partner_domain_crossings.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -101,6 +102,23 @@ struct Boundary_contact {
   std::array<double, 3> point{};        ///< the contact point (the start of a shared piece)
 };
 
+/// A point inside the box where the genuine part of an arc ends: a partner reaches the boundary of the partner
+/// domain there (the intersection curve meets a boundary curve of the second patch; a double curve of a
+/// self-intersection leaves the patch through its other sheet). Certified (internal/partner_domain_crossings.h):
+/// `box` holds exactly one solution (x1, x2, y1, y2) of the partner equations together with
+/// `boundary coordinate = bound`, a transversal crossing, and that solution is the point of the arc over its graph
+/// coordinate. Its traced point arc.points[index] is genuine (status proved; the partner lies on the domain's
+/// boundary, the other coordinates inside), and the floating-point statuses on its two sides differ.
+struct Locus_split_point {
+  std::size_t arc = 0;    ///< index into Surface_locus::arcs
+  std::size_t index = 0;  ///< the traced point arcs[arc].points[index]
+  int point = 0;          ///< the parameter point on the boundary: 0 Locus_point::first, 1 Locus_point::second
+  int coordinate = 0;     ///< its coordinate on the boundary: 0 (u or s), 1 (v or t)
+  Rational bound;         ///< the boundary value of that coordinate
+  /// {x1, x2, y1, y2}: the projection (u, v or u, t) and the partner ((l, k) or (v, s)), each {lo, hi}
+  std::array<std::array<double, 2>, 4> box{};
+};
+
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
@@ -113,6 +131,9 @@ struct Surface_locus {
   std::string note;  ///< why the topology was not computed, if it was not
   /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
   std::vector<Boundary_contact> contacts;
+  /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
+  /// is also a traced point of its arc.
+  std::vector<Locus_split_point> split_points;
 };
 
 namespace internal {
@@ -344,6 +365,68 @@ inline Surface_intersection_options with_partner_proofs(const Surface_intersecti
   return ow;
 }
 
+// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
+// after polishing): a failed polish must not be reported as a double point.
+inline bool verified(const Locus_point& q) {
+  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
+                                     q.point_3d[2] * q.point_3d[2]);
+  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
+}
+
+// Inserts the certified split points (internal/partner_domain_crossings.h) into the arcs of a subdivision topology:
+// between consecutive traced points whose floating-point statuses differ, the crossing of a side of the partner
+// domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
+// the pieces' index ranges shifted) and a Locus_split_point.
+template <class Lift>
+void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                         Lift lift_point) {
+  if (L.topology_method != "subdivision" || o.partner_domain_unbounded) return;
+  const std::vector<Partner_domain_side> sides = partner_domain_sides(o.partner_domain, o.box);
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    Curve_topology_edge& e = L.topology.edges[k];
+    if (arc.points.size() != e.polyline.size()) continue;
+    std::vector<std::pair<std::size_t, Partner_domain_crossing>> found;
+    for (std::size_t i = 0; i + 1 < arc.points.size(); ++i) {
+      const Locus_point &p = arc.points[i], &q = arc.points[i + 1];
+      if (p.genuine == q.genuine || !verified(p) || !verified(q)) continue;
+      const Curve_topology_piece* pc = nullptr;
+      for (const auto& x : e.pieces)
+        if (x.graph_axis >= 0 && x.first <= i && i + 1 <= x.last) pc = &x;
+      if (!pc) continue;
+      const std::array<double, 4> za{p.projection[0], p.projection[1], p.partner[0], p.partner[1]},
+          zb{q.projection[0], q.projection[1], q.partner[0], q.partner[1]};
+      if (auto c = crossing_between(eq, o.partner_domain, sides, za, zb, pc->cell, pc->graph_axis))
+        found.emplace_back(i, *c);
+    }
+    for (auto it = found.rbegin(); it != found.rend(); ++it) {  // from the back: earlier indices stay valid
+      const std::size_t i = it->first;
+      const auto& Z = it->second.box;
+      const std::array<double, 2> y{Z[2].mid(), Z[3].mid()};
+      Locus_point q = lift_point(Z[0].mid(), Z[1].mid(), &y);
+      q.genuine = q.status_proved = true;
+      q.partner_enclosure = {{{Z[2].lo, Z[2].hi}, {Z[3].lo, Z[3].hi}}};
+      arc.points.insert(arc.points.begin() + i + 1, q);
+      e.polyline.insert(e.polyline.begin() + i + 1, std::array<double, 2>{Z[0].mid(), Z[1].mid()});
+      for (auto& x : e.pieces) {
+        if (x.first > i) ++x.first;
+        if (x.last > i) ++x.last;
+      }
+    }
+    for (std::size_t j = 0; j < found.size(); ++j) {
+      const auto& c = found[j].second;
+      Locus_split_point sp;
+      sp.arc = k;
+      sp.index = found[j].first + 1 + j;
+      sp.point = c.side.point;
+      sp.coordinate = c.side.coordinate;
+      sp.bound = c.side.bound;
+      for (int d = 0; d < 4; ++d) sp.box[d] = {c.box[d].lo, c.box[d].hi};
+      L.split_points.push_back(sp);
+    }
+  }
+}
+
 // Proves the genuine / phantom status along the arcs of a subdivision topology (internal/certified_lifting.h),
 // starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
 template <class Lift>
@@ -354,6 +437,19 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   budget.left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
+    // the split points: their status is their own proof (about the exact crossing); the spans next to them are
+    // decided from the side of the boundary line that the partner is on (classify_span_at_split)
+    std::vector<bool> split(arc.points.size(), false);
+    std::vector<Partner_domain_crossing> crossings(arc.points.size());
+    std::vector<const Partner_domain_crossing*> split_boxes(arc.points.size(), nullptr);
+    for (const Locus_split_point& sp : L.split_points)
+      if (sp.arc == k && sp.index < split.size()) {
+        split[sp.index] = true;
+        Partner_domain_crossing& c = crossings[sp.index];
+        c.side = {sp.point, sp.coordinate, sp.bound};
+        for (int d = 0; d < 4; ++d) c.box[d] = Double_interval{sp.box[d][0], sp.box[d][1]};
+        split_boxes[sp.index] = &c;
+      }
     std::vector<std::array<double, 2>> partner;
     std::vector<bool> known, float_genuine;
     for (const Locus_point& q : arc.points) {
@@ -365,10 +461,10 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     }
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
-                              float_genuine, budget);
+                              float_genuine, budget, 6, split_boxes);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
-      if (c.point_status[i] != Partner_status::undecided) {
+      if (c.point_status[i] != Partner_status::undecided && !split[i]) {
         Locus_point& q = arc.points[i];
         const auto& y = c.partner_enclosure[i];
         if (c.point_status[i] == Partner_status::genuine && q.lifted &&
@@ -382,14 +478,6 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
         if (q.genuine) q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
       }
   }
-}
-
-// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
-// after polishing): a failed polish must not be reported as a double point.
-inline bool verified(const Locus_point& q) {
-  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
-                                     q.point_3d[2] * q.point_3d[2]);
-  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
 }
 
 } // namespace internal
@@ -456,6 +544,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
     return q;
   };
   internal::lift_arcs(L, lift_point);
+  internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point);
   return L;
 }
@@ -586,6 +675,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     return q;
   };
   internal::lift_arcs(L, lift_point);
+  internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
   return L;
 }

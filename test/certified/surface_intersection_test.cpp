@@ -428,6 +428,33 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
     }
   CHECK(on_line > 20);
   CHECK(on_line_proved == on_line);  // the whole segment, both sides of the transition, is decided by proofs
+  // The transition itself: at u = 0.6 the partner Q = (u + l, v) = (0.6 - u, 1/3) reaches the domain's side u = 0.
+  // It is a certified split point: a box around the exact (u, v, l, k) = (3/5, 1/3, -3/5, 0), a traced point of
+  // its arc, genuine and proved, between a phantom and a genuine traced point.
+  REQUIRE(L.split_points.size() == 1);
+  const Locus_split_point& sp = L.split_points[0];
+  CHECK(sp.point == 1);
+  CHECK(sp.coordinate == 0);
+  CHECK(sp.bound == Q(0));
+  const std::array<double, 4> exact{0.6, 1.0 / 3, -0.6, 0};
+  for (int c = 0; c < 4; ++c) {
+    CHECK(sp.box[c][0] <= exact[c]);
+    CHECK(exact[c] <= sp.box[c][1]);
+    CHECK(sp.box[c][1] - sp.box[c][0] < 1e-12);
+  }
+  const Locus_arc& arc = L.arcs.at(sp.arc);
+  REQUIRE(sp.index > 0);
+  REQUIRE(sp.index + 1 < arc.points.size());
+  const Locus_point& at = arc.points[sp.index];
+  CHECK(at.genuine);
+  CHECK(at.status_proved);
+  CHECK(at.second[0] == Approx(0).margin(1e-12));
+  CHECK(arc.points[sp.index - 1].genuine != arc.points[sp.index + 1].genuine);
+  // the traced points next to it are decided by the side of the line u = 0 their partner is on
+  CHECK(arc.points[sp.index - 1].status_proved);
+  CHECK(arc.points[sp.index + 1].status_proved);
+  // the topology edge carries the same point (the arcs stay parallel to the edges' polylines)
+  CHECK(L.topology.edges.at(sp.arc).polyline.size() == arc.points.size());
   CHECK(genuine_proved > 10);
   CHECK(phantom_proved > 5);
   // every enclosure is tightened at its point (Krawczyk with the graph coordinate fixed)
@@ -461,4 +488,45 @@ TEST_CASE("bicubic pair: every traced point lies on D = 0", "[surface][sampling]
         CHECK(distance3(a.evaluate(q.first[0], q.first[1]), b.evaluate(q.second[0], q.second[1])) < 1e-7);
       }
   CHECK(proved_genuine > 100);
+}
+
+TEST_CASE("intersection curve leaving the second patch: the split point is certified at an irrational point",
+          "[surface][lifting]") {
+  // phi(u, v) = (u, v, u^2 + v^2) and the plane piece psi(s, t) = (s/4, t, 1/4): the intersection curve is the
+  // circle u^2 + v^2 = 1/4 with partner s = 4u, t = v. It is genuine for u <= 1/4, where s <= 1; the genuine part
+  // ends at u = 1/4, v = t = sqrt(3)/4 on psi's side s = 1.
+  const Patch phi = from_power({"u", "v", "u^2+v^2"}, 2, 2);
+  const Patch psi = from_power({"u/4", "v", "1/4"}, 2, 2);
+  const Surface_locus L = intersection_locus(phi, psi);
+  REQUIRE(L.topology_computed);
+  REQUIRE(L.topology_method == "subdivision");
+  REQUIRE(L.split_points.size() == 1);
+  const Locus_split_point& sp = L.split_points[0];
+  CHECK(sp.point == 1);  // psi's point (s, t)
+  CHECK(sp.coordinate == 0);
+  CHECK(sp.bound == Q(1));
+  const double r3 = std::sqrt(3.0) / 4;
+  const std::array<double, 4> exact{0.25, r3, r3, 1};  // (u, t) and the partner (v, s)
+  for (int c = 0; c < 4; ++c) {
+    CHECK(sp.box[c][0] <= exact[c] + 1e-16);  // (sqrt is rounded: a margin of one unit)
+    CHECK(exact[c] - 1e-16 <= sp.box[c][1]);
+    CHECK(sp.box[c][1] - sp.box[c][0] < 1e-12);
+  }
+  const Locus_arc& arc = L.arcs.at(sp.arc);
+  const Locus_point& at = arc.points.at(sp.index);
+  CHECK(at.genuine);
+  CHECK(at.status_proved);
+  CHECK(at.second[0] == Approx(1).margin(1e-12));
+  // the closed form decides every other traced point: genuine iff u < 1/4; the proved ones must agree
+  std::size_t proved = 0;
+  for (std::size_t i = 0; i < arc.points.size(); ++i) {
+    if (i == sp.index) continue;
+    const Locus_point& q = arc.points[i];
+    CHECK(std::fabs(q.projection[0] * q.projection[0] + q.projection[1] * q.projection[1] - 0.25) < 1e-9);
+    if (q.status_proved) {
+      ++proved;
+      CHECK(q.genuine == (q.projection[0] < 0.25));
+    }
+  }
+  CHECK(proved + 2 >= arc.points.size());
 }

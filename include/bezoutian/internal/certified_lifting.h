@@ -22,6 +22,7 @@
 
 #include <bezoutian/Curve_topology.h>
 #include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/internal/partner_domain_crossings.h>
 #include <bezoutian/number_types.h>
 
 #include <algorithm>
@@ -117,13 +118,6 @@ inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, c
   return true;
 }
 
-/// Is the double interval [x.lo, x.hi] inside [a, b] (exactly), disjoint from it?
-inline bool interval_inside(const Double_interval& x, const Rational& a, const Rational& b) {
-  return Rational(x.lo) >= a && Rational(x.hi) <= b;
-}
-inline bool interval_disjoint(const Double_interval& x, const Rational& a, const Rational& b) {
-  return Rational(x.hi) < a || Rational(x.lo) > b;
-}
 
 /// A box W = V x Y predicted to hold the zeros (v, y) of E(t, .) for t in T (floating point: Newton at the centre
 /// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled).
@@ -265,6 +259,137 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   return status_from_partner(eq, domain, unbounded, axis, T, K, start(), false, budget);
 }
 
+/// Status of the arc points over a span T that ends at a certified split point (partner_domain_crossings.h) whose
+/// graph interval lies in T. There the followed partner is on the domain's boundary, so its enclosure K straddles
+/// the boundary line and classify_partner_span cannot decide. Instead:
+///  1. Krawczyk over T (strict) and the anchor identify the zero curve gamma(t) = (v(t), y(t)), unique in W, with
+///     the arc and its partner (as in classify_partner_span). The split's solution lies in W, so gamma(x*) is it:
+///     G(x*) = bound, with G(t) the side's coordinate along gamma (g is linear in z) and x* the split's abscissa.
+///  2. dG/dt = g_t + g_w gamma'(t), gamma' = -(dE/dw)^-1 dE/dt, is enclosed over T x K (Cramer's rule in interval
+///     arithmetic on the preconditioned system). If it has a sign, G - bound has the sign of dG/dt (t - x*) on T:
+///     the followed partner is on a known side of the line for every t of T but x*.
+///  3. Inside: genuine if the other coordinates of P and Q lie inside over K. Outside: phantom if no arc point over
+///     T has another partner in the domain. Another partner y' of an arc point (t, v(t)), v(t) in K_v, lies outside
+///     W_y (uniqueness in W), so no_genuine_partner on T x K_v starts from four boxes covering the complement of
+///     W_y's interior.
+/// The status holds for the arc points over T beyond the split box's graph interval (`split_at_low_end`: the split
+/// is at T's low end); the few points inside that interval (width about 1e-15) are not claimed.
+inline Partner_status classify_span_at_split(const Partner_equations& eq, const Parameter_box& domain, int axis,
+                                             const Double_interval& T, const std::array<Double_interval, 3>& W0,
+                                             const Parameter_box& cell, const Partner_domain_crossing& split,
+                                             bool split_at_low_end, Exclusion_budget* budget,
+                                             std::array<Double_interval, 2>* partner,
+                                             std::array<Double_interval, 3>* enclosure) {
+  using D = Double_interval;
+  const Partner_status no = Partner_status::undecided;
+  const int q[3] = {1 - axis, 2, 3};
+  if (!(T.lo <= split.box[axis].lo && split.box[axis].hi <= T.hi)) return no;
+  std::array<D, 3> W = W0, K;
+  if (!prove_zero_curve(eq, axis, T, W, K)) return no;
+  {  // the anchor (classify_partner_span)
+    std::array<D, 3> at = W;
+    const D t{T.mid(), T.mid()};
+    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return no;
+    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
+    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return no;
+  }
+  for (int c = 0; c < 3; ++c)
+    if (!(W[c].lo <= split.box[q[c]].lo && split.box[q[c]].hi <= W[c].hi)) return no;
+  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return no;
+  // 2. the sign of dG/dt over T x K
+  std::array<D, 4> z;
+  z[axis] = T;
+  for (int c = 0; c < 3; ++c) z[q[c]] = K[c];
+  std::array<D, 3> E;
+  std::array<std::array<D, 4>, 3> J;
+  eq.evaluate(z, E, &J);
+  double A[3][3], C[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
+  if (!invert_3x3(A, C)) return no;
+  std::array<std::array<D, 3>, 3> M;  // C dE/dw, close to the identity
+  std::array<D, 3> rhs;               // C dE/dt
+  for (int r = 0; r < 3; ++r) {
+    rhs[r] = D{0, 0};
+    for (int l = 0; l < 3; ++l) rhs[r] = rhs[r] + D{C[r][l], C[r][l]} * J[l][axis];
+    for (int c = 0; c < 3; ++c) {
+      M[r][c] = D{0, 0};
+      for (int l = 0; l < 3; ++l) M[r][c] = M[r][c] + D{C[r][l], C[r][l]} * J[l][q[c]];
+    }
+  }
+  auto det3 = [](const std::array<std::array<D, 3>, 3>& a) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const D det = det3(M);
+  if (det.contains_zero()) return no;
+  const D inverse_det = D::widen(1 / det.hi, 1 / det.lo);  // 1/x decreases on an interval without 0
+  const Partner_domain_side& side = split.side;
+  auto grad = [&](int i) {
+    const double d = side.point == 0 ? eq.dP(side.coordinate, i) : eq.dQ(side.coordinate, i);
+    return D{d, d};
+  };
+  D dG = grad(axis);
+  for (int c = 0; c < 3; ++c) {
+    std::array<std::array<D, 3>, 3> Mc = M;
+    for (int r = 0; r < 3; ++r) Mc[r][c] = rhs[r];
+    dG = dG - grad(q[c]) * (det3(Mc) * inverse_det);  // gamma'_c = -det(M_c) / det(M)
+  }
+  if (dG.contains_zero() || !std::isfinite(dG.lo) || !std::isfinite(dG.hi)) return no;
+  const int far_sign = (dG.lo > 0 ? 1 : -1) * (split_at_low_end ? 1 : -1);  // sign of G - bound beyond the split
+  const bool lower = side.bound == (side.coordinate == 0 ? domain.u0 : domain.v0);
+  const bool inside_far = lower ? far_sign > 0 : far_sign < 0;
+  std::array<D, 2> P, Q;
+  eq.points(z, P, Q);
+  if (inside_far) {
+    for (int point = 0; point < 2; ++point)
+      for (int coordinate = 0; coordinate < 2; ++coordinate) {
+        if (point == side.point && coordinate == side.coordinate) continue;
+        const D& x = point == 0 ? P[coordinate] : Q[coordinate];
+        if (!(coordinate == 0 ? interval_inside(x, domain.u0, domain.u1) : interval_inside(x, domain.v0, domain.v1)))
+          return no;
+      }
+    if (partner) *partner = {K[1], K[2]};
+    if (enclosure) *enclosure = K;
+    return Partner_status::genuine;
+  }
+  // Exclusion on thin boxes: over a piece T_j of T the arc points lie in T_j x K_j,v (Krawczyk's image on T_j
+  // inside W), and the partners of points of such a thin box sweep a region of width ~ |T_j| around the followed
+  // one, which the complement of W_y avoids once T_j is short enough. Pieces that fail are halved (three times).
+  const double big = std::numeric_limits<double>::max();
+  const D all{-big, big};
+  const std::vector<std::array<D, 2>> complement{{D{-big, W[1].lo}, all}, {D{W[1].hi, big}, all},
+                                                 {W[1], D{-big, W[2].lo}}, {W[1], D{W[2].hi, big}}};
+  struct Piece {
+    D T;
+    int depth;
+  };
+  std::vector<Piece> pieces;
+  const int initial = 4;
+  for (int j = initial; j-- > 0;)
+    pieces.push_back({D{T.lo + (T.hi - T.lo) * j / initial, j + 1 == initial ? T.hi : T.lo + (T.hi - T.lo) * (j + 1) / initial}, 0});
+  while (!pieces.empty()) {
+    const Piece pc = pieces.back();
+    pieces.pop_back();
+    std::array<D, 3> Wj = W;  // (non-strict: the zero over T_j is the one unique in W, so it lies in the image)
+    bool excluded = parametric_partner_krawczyk(eq, axis, pc.T, Wj);
+    if (excluded) {
+      if (budget && !budget->take()) return no;
+      const D& X1 = axis == 0 ? pc.T : Wj[0];
+      const D& X2 = axis == 0 ? Wj[0] : pc.T;
+      const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
+      excluded = no_genuine_partner(eq, box, domain, 1024, &complement);
+    }
+    if (excluded) continue;
+    if (pc.depth >= 3) return no;
+    const double mid = pc.T.mid();
+    pieces.push_back({D{mid, pc.T.hi}, pc.depth + 1});
+    pieces.push_back({D{pc.T.lo, mid}, pc.depth + 1});
+  }
+  if (enclosure) *enclosure = K;
+  return Partner_status::phantom;
+}
+
 /// A tight enclosure of the partner at one value t of the graph coordinate. K is a box in which the zero curve is
 /// unique for each t of `span` (a strict parametric Krawczyk test); a Krawczyk test with t fixed, on a
 /// small box around `guess` (other coordinate, y1, y2) inside K, encloses the same zero tightly. Returns `y`
@@ -335,7 +460,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                                                       const std::vector<std::array<double, 2>>& partner,
                                                       const std::vector<bool>& partner_known,
                                                       const std::vector<bool>& float_genuine, Exclusion_budget& budget,
-                                                      int max_halvings = 6) {
+                                                      int max_halvings = 6,
+                                                      const std::vector<const Partner_domain_crossing*>& splits = {}) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -364,6 +490,7 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
     auto coord = [&](std::size_t i, int c) {
       if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
       if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+      if (i < splits.size() && splits[i]) return splits[i]->box[c];  // a certified split point: its proved box
       return D{e.polyline[i][c], e.polyline[i][c]};
     };
     // The enclosure y of a genuine partner holds over the whole span (K: the span's box, where the zero curve is
@@ -452,8 +579,17 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         std::array<D, 2> y = none;
         std::array<D, 3> K;
         const bool phantom_seen = !float_genuine[i] || !float_genuine[i + 1];
-        const Partner_status st = classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y,
-                                                        phantom_seen && s.depth <= 2, s.depth == 0, &K, &budget);
+        // a span ending at a certified split point: decided by the side of the line the partner is on
+        const Partner_domain_crossing* split = nullptr;
+        for (std::size_t j : {i, i + 1})
+          if (j < splits.size() && splits[j] && s.T.lo <= splits[j]->box[axis].lo && splits[j]->box[axis].hi <= s.T.hi)
+            split = splits[j];
+        const Partner_status st =
+            split && !unbounded
+                ? classify_span_at_split(eq, domain, axis, s.T, Ws, pc.cell, *split,
+                                         split->box[axis].mid() < s.T.mid(), &budget, &y, &K)
+                : classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y,
+                                        phantom_seen && s.depth <= 2, s.depth == 0, &K, &budget);
         if (st == Partner_status::outside) {  // the whole span (depth 0): joins the run, decided at the flush
           run.push_back({i, s.T, K[0]});
           left = right = Partner_status::outside;
