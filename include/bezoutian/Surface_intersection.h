@@ -54,8 +54,9 @@ struct Surface_intersection_options {
   /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
   bool certify_lifting = true;
   /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus; the
-  /// spans left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci.
-  std::size_t lifting_exclusion_budget = 500;
+  /// spans left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
+  /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
+  std::size_t lifting_exclusion_budget = 5000;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.

@@ -235,10 +235,35 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   // fails: the caller asks for it only where the floating-point lifting saw phantom points.
   auto cell_phantom = [&]() {
     if (unbounded || !try_cell_exclusion) return Partner_status::undecided;
-    const Parameter_box box = axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), cell.v0, cell.v1}
-                                        : Parameter_box{cell.u0, cell.u1, Rational(T.lo), Rational(T.hi)};
-    if (budget && !budget->take()) return Partner_status::undecided;
-    return no_genuine_partner(eq, box, domain, 256, start()) ? Partner_status::phantom : Partner_status::undecided;
+    // The strip T x (the cell's range) holds the arc over T. It is covered by about square boxes (at most
+    // max_boxes), and a box whose exclusion fails is halved along its longer side: points of the strip far from
+    // D = 0 have no partner at all, so only the boxes near the arc need to be thin. At most max_boxes tests.
+    const int max_boxes = 16;
+    const Rational &c0 = axis == 0 ? cell.v0 : cell.u0, &c1 = axis == 0 ? cell.v1 : cell.u1;
+    const double ratio = CGAL::to_double(c1 - c0) / std::max(T.hi - T.lo, 1e-300);
+    const int squares = std::max(1, std::min(int(std::ceil(ratio)), max_boxes));
+    std::vector<Parameter_box> todo;
+    for (int j = 0; j < squares; ++j) {
+      const Rational a = c0 + (c1 - c0) * j / squares, b = j + 1 == squares ? c1 : c0 + (c1 - c0) * (j + 1) / squares;
+      todo.push_back(axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), a, b}
+                               : Parameter_box{a, b, Rational(T.lo), Rational(T.hi)});
+    }
+    for (int tests = 0; !todo.empty(); ++tests) {
+      const Parameter_box box = todo.back();
+      todo.pop_back();
+      if (tests >= max_boxes || (budget && !budget->take())) return Partner_status::undecided;
+      if (no_genuine_partner(eq, box, domain, 256, start())) continue;
+      if (box.u1 - box.u0 >= box.v1 - box.v0) {
+        const Rational m = (box.u0 + box.u1) / 2;
+        todo.push_back({box.u0, m, box.v0, box.v1});
+        todo.push_back({m, box.u1, box.v0, box.v1});
+      } else {
+        const Rational m = (box.v0 + box.v1) / 2;
+        todo.push_back({box.u0, box.u1, box.v0, m});
+        todo.push_back({box.u0, box.u1, m, box.v1});
+      }
+    }
+    return Partner_status::phantom;
   };
   std::array<D, 3> W = W0, K;
   const bool proved = prove_zero_curve(eq, axis, T, W, K);
