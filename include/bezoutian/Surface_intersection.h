@@ -374,6 +374,17 @@ inline bool verified(const Locus_point& q) {
   return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
 }
 
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_equations& eq, const Locus_split_point& sp,
+                                                                  int bits) {
+  if (bits < 1 || bits > 100000) throw Invalid_input("refine_split_point: bits must be in [1, 100000]");
+  Partner_domain_crossing c;
+  c.side = {sp.point, sp.coordinate, sp.bound};
+  for (int d = 0; d < 4; ++d) c.box[d] = Double_interval{sp.box[d][0], sp.box[d][1]};
+  const auto r = refine_crossing(eq, c, bits);
+  if (!r) throw Error("refine_split_point: the refinement of the split point's box failed");
+  return *r;
+}
+
 // Inserts the certified split points (internal/partner_domain_crossings.h) into the arcs of a subdivision topology:
 // between consecutive traced points whose floating-point statuses differ, the crossing of a side of the partner
 // domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
@@ -548,6 +559,22 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point);
   return L;
+}
+
+/// \brief The split point `sp` of the self-intersection locus of `patch` to any precision: boxes with rational
+/// bounds {lo, hi}, narrower than 2^-bits, around its exact coordinates (u, v, l, k) (Locus_split_point::box
+/// refined by Krawczyk's test in MPFI arithmetic, internal/partner_domain_crossings.h). Throws Error if the
+/// refinement fails.
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Rational_bezier_patch<Rational>& patch,
+                                                                  const Locus_split_point& sp, int bits) {
+  return internal::refine_split_point(internal::Partner_equations(patch), sp, bits);
+}
+
+/// \brief The same for the intersection locus of `phi` and `psi`: coordinates (u, t, v, s).
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Rational_bezier_patch<Rational>& phi,
+                                                                  const Rational_bezier_patch<Rational>& psi,
+                                                                  const Locus_split_point& sp, int bits) {
+  return internal::refine_split_point(internal::Partner_equations(phi, psi), sp, bits);
 }
 
 /// \brief The boundary contacts of two patches (see Boundary_contact): every pair of boundary curves is

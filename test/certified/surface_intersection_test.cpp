@@ -455,6 +455,14 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
   CHECK(arc.points[sp.index + 1].status_proved);
   // the topology edge carries the same point (the arcs stay parallel to the edges' polylines)
   CHECK(L.topology.edges.at(sp.arc).polyline.size() == arc.points.size());
+  // refined to 128 bits, the boxes still hold the exact crossing (3/5, 1/3, -3/5, 0)
+  const auto r = refine_split_point(phi, sp, 128);
+  const std::array<Q, 4> exact_q{Q(3, 5), Q(1, 3), Q(-3, 5), Q(0)};
+  for (int c = 0; c < 4; ++c) {
+    CHECK(r[c][0] <= exact_q[c]);
+    CHECK(exact_q[c] <= r[c][1]);
+    CHECK(r[c][1] - r[c][0] < Q(1) / (Integer(1) << 128));
+  }
   CHECK(genuine_proved > 10);
   CHECK(phantom_proved > 5);
   // every enclosure is tightened at its point (Krawczyk with the graph coordinate fixed)
@@ -529,4 +537,18 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
     }
   }
   CHECK(proved + 2 >= arc.points.size());
+  // to any precision: 200-bit boxes hold u = 1/4, t = v = sqrt(3)/4, s = 1 (checked exactly: lo^2 <= 3/16 <= hi^2)
+  const auto r = refine_split_point(phi, psi, sp, 200);
+  const Q width = Q(1) / (Integer(1) << 200);
+  for (int c = 0; c < 4; ++c) CHECK(r[c][1] - r[c][0] < width);
+  CHECK(r[0][0] <= Q(1, 4));
+  CHECK(Q(1, 4) <= r[0][1]);
+  CHECK(r[3][0] <= Q(1));
+  CHECK(Q(1) <= r[3][1]);
+  for (int c : {1, 2}) {
+    CHECK(r[c][0] > 0);
+    CHECK(r[c][0] * r[c][0] <= Q(3, 16));
+    CHECK(Q(3, 16) <= r[c][1] * r[c][1]);
+  }
+  CHECK_THROWS_AS(refine_split_point(phi, psi, sp, 0), Invalid_input);
 }
