@@ -162,6 +162,19 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                                     {"value", text(sp.bound)}}}});
   }
   j["split_points"] = splits;
+  if (L.self_intersection) {  // rank-1 points of the patch: where double curves end inside the domain
+    json pinch = json::array();
+    for (const auto& p : L.pinch_points)
+      pinch.push_back({{"u", p.u},
+                       {"v", p.v},
+                       {"box", {{CGAL::to_double(p.box[0][0]), CGAL::to_double(p.box[0][1])},
+                                {CGAL::to_double(p.box[1][0]), CGAL::to_double(p.box[1][1])}}},
+                       {"kernel_direction", p.chart == 0 ? "(1, m)" : "(m, 1)"},
+                       {"m", CGAL::to_double((p.m[0] + p.m[1]) / 2)}});
+    j["pinch_points"] = pinch;
+    j["pinch_points_complete"] = L.pinch_points_complete;
+    if (!L.pinch_points_note.empty()) j["pinch_points_note"] = L.pinch_points_note;
+  }
   j["partner_variables"] = L.self_intersection ? json{"l", "k"} : json{"v", "s"};
   j["lifting"] = "floating point along certified arcs (see doc/surface_intersection.md)";
   j["seconds"] = seconds;
@@ -184,8 +197,8 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
   s << "<text x='" << pad << "' y='" << pad - 12 << "' font-size='11' font-family='sans-serif'>"
     << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
     << "," << u1 << "]x[" << v0 << "," << v1 << "]</text>\n";
-  s << "<text x='" << pad << "' y='" << pad - 2 << "' font-size='11' font-family='sans-serif'>dashed grey: phantom; "
-    << "grey boxes: proved free of genuine points; green diamonds: a genuine part ends (certified)</text>\n";
+  s << "<text x='" << pad << "' y='" << pad - 2 << "' font-size='10' font-family='sans-serif'>dashed grey: phantom; "
+    << "grey boxes: no genuine point; green diamond: a genuine part ends; orange triangle: pinch point</text>\n";
   for (const auto& b : L.topology.excluded_regions)  // proved free of genuine points: hatched grey
     s << "<rect x='" << X(CGAL::to_double(b.u0)) << "' y='" << Y(CGAL::to_double(b.v1)) << "' width='"
       << X(CGAL::to_double(b.u1)) - X(CGAL::to_double(b.u0)) << "' height='"
@@ -211,6 +224,9 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
     if (v.on_boundary)
       s << "<rect x='" << X(v.u) - 4 << "' y='" << Y(v.v) - 4 << "' width='8' height='8' fill='blue'/>\n";
   }
+  for (const auto& p : L.pinch_points)  // pinch points: orange triangles
+    s << "<polygon points='" << X(p.u) << "," << Y(p.v) - 7 << " " << X(p.u) + 6 << "," << Y(p.v) + 5 << " "
+      << X(p.u) - 6 << "," << Y(p.v) + 5 << "' fill='#ff7f0e' stroke='black'/>\n";
   for (const auto& sp : L.split_points) {  // where a genuine part ends inside the box: a green diamond
     const auto& q = L.arcs[sp.arc].points[sp.index];
     const double x = X(q.projection[0]), y = Y(q.projection[1]);
@@ -306,6 +322,10 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << " traced points with partner in the domain (" << proved << "/" << total
               << " genuine/phantom status proved), max residual " << worst << "\n";
   }
+  if (L.self_intersection)
+    std::cout << "  " << L.pinch_points.size() << " pinch point(s) of the patch in the box"
+              << (L.pinch_points_complete ? " (all, proved)" : " (search incomplete: " + L.pinch_points_note + ")")
+              << "\n";
   if (!L.split_points.empty())
     std::cout << "  " << L.split_points.size()
               << " certified split point(s): genuine parts end inside the box where the partner reaches the domain's "

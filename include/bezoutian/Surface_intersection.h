@@ -19,6 +19,7 @@
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/internal/matrix_zero_points.h>
 #include <bezoutian/internal/partner_domain_crossings.h>
+#include <bezoutian/internal/pinch_points.h>
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Implicit_equation.h>
 #include <bezoutian/Rational_bezier_patch.h>
@@ -57,6 +58,9 @@ struct Surface_intersection_options {
   /// spans left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
   /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
   std::size_t lifting_exclusion_budget = 5000;
+  /// Self-intersection: search the pinch points of the patch in the box (internal/pinch_points.h), with at most
+  /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
+  std::size_t pinch_point_boxes = 20000;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
@@ -135,6 +139,12 @@ struct Surface_locus {
   /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
   /// is also a traced point of its arc.
   std::vector<Locus_split_point> split_points;
+  /// Self-intersection: the pinch points of the patch in the box (rank-1 Jacobian: the double curve ends there,
+  /// its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
+  /// says whether every other point of the box is proved not to be one (else `pinch_points_note` says why not).
+  std::vector<Pinch_point> pinch_points;
+  bool pinch_points_complete = false;
+  std::string pinch_points_note;
 };
 
 namespace internal {
@@ -505,6 +515,14 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
                         "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
                         "infinity, as for an exact graph (u, v, f(u,v)))");
+  if (o.pinch_point_boxes > 0) {
+    Pinch_point_search pinch = internal::find_pinch_points(patch, o.box, o.pinch_point_boxes);
+    L.pinch_points = pinch.points;
+    L.pinch_points_complete = pinch.complete;
+    L.pinch_points_note = pinch.reason;
+  } else {
+    L.pinch_points_note = "not searched (pinch_point_boxes = 0)";
+  }
   if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch))))
     return L;
   const Bezoutian_matrix& B = L.equation.matrix;
