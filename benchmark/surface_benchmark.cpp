@@ -48,7 +48,10 @@ int main(int argc, char** argv) {
             for (const auto& q : arc.points) ++points, proved += q.status_proved, genuine += q.genuine;
           std::cout << " " << tt << " " << L.topology.components.size() << " (" << closed << " closed) "
                     << L.topology.number_of_singular_points() << " [status proved " << proved << "/" << points
-                    << ", genuine " << genuine << "] "
+                    << ", genuine " << genuine << ", split points " << L.split_points.size();
+          if (self)
+            std::cout << ", pinch points " << L.pinch_points.size() << (L.pinch_points_complete ? " (complete)" : " (incomplete)");
+          std::cout << "] "
                     << (L.topology_computed ? L.topology_method : std::string("NOT CERTIFIED: ") + L.note) << std::endl;
         }
 }

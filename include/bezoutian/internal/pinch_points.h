@@ -92,6 +92,15 @@ struct Bivariate_enclosure {
     }
   }
   Double_interval operator()(const Double_interval& u, const Double_interval& v) const {
+    if (u.lo >= 0 && v.lo >= 0 && std::isfinite(u.hi) && std::isfinite(v.hi)) {  // two products instead of four
+      Double_interval r{0, 0};
+      for (std::size_t j = c.size(); j-- > 0;) {
+        Double_interval s{0, 0};
+        for (std::size_t i = c[j].size(); i-- > 0;) s = Double_interval::add(Double_interval::mul_nonnegative(s, u), c[j][i]);
+        r = Double_interval::add(Double_interval::mul_nonnegative(r, v), s);
+      }
+      return r;
+    }
     Double_interval r{0, 0};
     for (std::size_t j = c.size(); j-- > 0;) {
       Double_interval s{0, 0};
@@ -158,9 +167,10 @@ class Pinch_system {
   bool excluded(int chart, const std::array<Double_interval, 3>& x) const {
     std::array<Double_interval, 3> G, Gc, c;
     std::array<std::array<Double_interval, 3>, 3> J;
-    evaluate(chart, x, G, &J);
+    evaluate(chart, x, G, nullptr);  // the cheap test first
     for (int r = 0; r < 3; ++r)
       if (!G[r].contains_zero()) return true;
+    evaluate(chart, x, G, &J);
     for (int d = 0; d < 3; ++d) c[d] = Double_interval{x[d].mid(), x[d].mid()};
     evaluate(chart, c, Gc, nullptr);
     for (int r = 0; r < 3; ++r) {
@@ -171,7 +181,8 @@ class Pinch_system {
     return false;
   }
   /// Newton's method in doubles from z (a guess for the proofs, never a decision); false if it does not converge.
-  bool newton(int chart, std::array<double, 3>& z) const {
+  bool newton(int chart, std::array<double, 3>& z, double radius) const {
+    const std::array<double, 3> z0 = z;
     for (int it = 0; it < 20; ++it) {
       std::array<Double_interval, 3> x, G;
       for (int d = 0; d < 3; ++d) x[d] = Double_interval{z[d], z[d]};
@@ -188,6 +199,8 @@ class Pinch_system {
         step += std::fabs(dz);
       }
       if (!std::isfinite(step)) return false;
+      for (int r = 0; r < 3; ++r)  // left the cell's neighbourhood: not this cell's solution
+        if (std::fabs(z[r] - z0[r]) > radius) return false;
       if (step < 1e-14 * (1 + std::fabs(z[0]) + std::fabs(z[1]) + std::fabs(z[2]))) return true;
     }
     return false;
@@ -222,7 +235,7 @@ class Pinch_system {
 
 /// Finds every pinch point of `phi` in `box` (see the header comment). `max_boxes` bounds the subdivision.
 inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational>& phi, const Parameter_box& box,
-                                            std::size_t max_boxes = 20000) {
+                                            std::size_t max_boxes = 60000) {
   using D = Double_interval;
   using I = Mpfi_interval;
   const Pinch_system S(phi);
@@ -273,8 +286,7 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
       if (covered) continue;
       const double w = std::max({x[0].hi - x[0].lo, x[1].hi - x[1].lo, x[2].hi - x[2].lo});
       std::array<double, 3> z{x[0].mid(), x[1].mid(), x[2].mid()};
-      if (w < 1.0 / 16 && S.newton(chart, z) && std::fabs(z[0] - x[0].mid()) <= w && std::fabs(z[1] - x[1].mid()) <= w &&
-          std::fabs(z[2] - x[2].mid()) <= w) {
+      if (w < 1.0 / 16 && S.newton(chart, z, w)) {
         // a solution near the cell: Krawczyk's proof on boxes around it, the largest first (one that contains
         // the cell ends its subdivision)
         for (double r : {2 * w, w / 8, w / 128, 1e-9 * (1 + std::fabs(z[0]) + std::fabs(z[1]) + std::fabs(z[2]))}) {
