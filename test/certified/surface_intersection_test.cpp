@@ -623,4 +623,6 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
     CHECK(Q(3, 16) <= r[c][1] * r[c][1]);
   }
   CHECK_THROWS_AS(refine_split_point(phi, psi, sp, 0), Invalid_input);
+  // a split point of another problem (the patches swapped): no zero in its box, a clear error, not a wrong box
+  CHECK_THROWS_AS(refine_split_point(psi, phi, sp, 64), Error);
 }
