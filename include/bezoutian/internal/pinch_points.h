@@ -178,6 +178,22 @@ class Pinch_system {
       for (int d = 0; d < 3; ++d) g = g + J[r][d] * (x[d] - c[d]);
       if (!g.contains_zero()) return true;
     }
+    // preconditioned: any combination C G of the equations vanishes with them; with C ~ J(centre)^-1 the rows of
+    // C G are nearly decoupled, so a box without a solution is excluded while still wide (interval Newton's idea)
+    double A[3][3], C[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int d = 0; d < 3; ++d) A[r][d] = J[r][d].mid();
+    if (!invert_3x3(A, C)) return false;
+    for (int r = 0; r < 3; ++r) {
+      Double_interval g{0, 0};
+      for (int k = 0; k < 3; ++k) g = g + Double_interval{C[r][k], C[r][k]} * Gc[k];
+      for (int d = 0; d < 3; ++d) {
+        Double_interval slope{0, 0};
+        for (int k = 0; k < 3; ++k) slope = slope + Double_interval{C[r][k], C[r][k]} * J[k][d];
+        g = g + slope * (x[d] - c[d]);
+      }
+      if (!g.contains_zero()) return true;
+    }
     return false;
   }
   /// Newton's method in doubles from z (a guess for the proofs, never a decision); false if it does not converge.
@@ -271,7 +287,10 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
       todo.pop_back();
       if (++boxes > max_boxes) {
         out.complete = false;
-        out.reason = "the subdivision budget of " + std::to_string(max_boxes) + " boxes is spent";
+        out.reason = "the subdivision budget of " + std::to_string(max_boxes) + " boxes is spent (last box near (u, v, m) = (" +
+                     std::to_string(cell.x[0].mid()) + ", " + std::to_string(cell.x[1].mid()) + ", " +
+                     std::to_string(cell.x[2].mid()) + "), chart " + std::to_string(chart) + ", depth " +
+                     std::to_string(cell.depth) + ")";
         break;
       }
       const auto& x = cell.x;
