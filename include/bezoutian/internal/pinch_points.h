@@ -45,40 +45,16 @@ struct Pinch_point_search {
 
 namespace internal {
 
-// A bivariate polynomial as coefficients c[j][i] of u^i v^j (exact).
+// A bivariate polynomial (CGAL's Polynomial_2, inner variable u) as its coefficient matrix c[j][i] of u^i v^j,
+// for fast evaluation.
 struct Bivariate {
   std::vector<std::vector<Rational>> c;
-  int du() const { return c.empty() ? -1 : int(c[0].size()) - 1; }
-  static Bivariate from(const Polynomial_2<Rational>& p, int m, int n) {
-    Bivariate b;
-    b.c.assign(n + 1, std::vector<Rational>(m + 1, Rational(0)));
-    for (int j = 0; j <= p.degree() && j <= n; ++j)
-      for (int i = 0; i <= p[j].degree() && i <= m; ++i) b.c[j][i] = p[j][i];
-    return b;
-  }
-  Bivariate derivative(int direction) const {
-    Bivariate d = *this;
-    for (std::size_t j = 0; j < c.size(); ++j)
-      for (std::size_t i = 0; i < c[j].size(); ++i)
-        d.c[j][i] = direction == 0 ? (i + 1 < c[j].size() ? c[j][i + 1] * int(i + 1) : Rational(0))
-                                   : (j + 1 < c.size() ? c[j + 1][i] * int(j + 1) : Rational(0));
-    return d;
-  }
-  friend Bivariate operator*(const Bivariate& a, const Bivariate& b) {
-    Bivariate r;
-    r.c.assign(a.c.size() + b.c.size() - 1, std::vector<Rational>(a.c[0].size() + b.c[0].size() - 1, Rational(0)));
-    for (std::size_t j = 0; j < a.c.size(); ++j)
-      for (std::size_t i = 0; i < a.c[j].size(); ++i)
-        if (!CGAL::is_zero(a.c[j][i]))
-          for (std::size_t l = 0; l < b.c.size(); ++l)
-            for (std::size_t k = 0; k < b.c[l].size(); ++k) r.c[j + l][i + k] += a.c[j][i] * b.c[l][k];
-    return r;
-  }
-  friend Bivariate operator-(const Bivariate& a, const Bivariate& b) {
-    Bivariate r = a;  // (same shapes: products of the same degrees)
-    for (std::size_t j = 0; j < r.c.size(); ++j)
-      for (std::size_t i = 0; i < r.c[j].size(); ++i) r.c[j][i] -= b.c[j][i];
-    return r;
+  explicit Bivariate(const Polynomial_2<Rational>& p) {
+    int m = 0;
+    for (int j = 0; j <= p.degree(); ++j) m = std::max(m, p[j].degree());
+    c.assign(p.degree() + 1, std::vector<Rational>(m + 1, Rational(0)));
+    for (int j = 0; j <= p.degree(); ++j)
+      for (int i = 0; i <= p[j].degree(); ++i) c[j][i] = p[j][i];
   }
 };
 
@@ -126,20 +102,19 @@ inline Mpfi_interval evaluate_mpfi(const Bivariate& b, const Mpfi_interval& u, c
 class Pinch_system {
  public:
   explicit Pinch_system(const Rational_bezier_patch<Rational>& phi) {
-    const auto pf = phi.power_form();
-    const int m = phi.degree_u(), n = phi.degree_v();
-    std::array<Bivariate, 4> a, au, av;
-    for (int k = 0; k < 4; ++k) {
-      a[k] = Bivariate::from(pf[k], m, n);
-      au[k] = a[k].derivative(0);
-      av[k] = a[k].derivative(1);
-    }
+    using P2 = Polynomial_2<Rational>;
+    const auto diff = [](const P2& p, int variable) {  // variable 0: u (inner), 1: v
+      return typename CGAL::Polynomial_traits_d<P2>::Differentiate()(p, variable);
+    };
+    const auto a = phi.power_form();
     for (int c = 0; c < 3; ++c) {
-      H_[c] = au[c + 1] * a[0] - a[c + 1] * au[0];
-      K_[c] = av[c + 1] * a[0] - a[c + 1] * av[0];
+      const P2 H = diff(a[c + 1], 0) * a[0] - a[c + 1] * diff(a[0], 0);
+      const P2 K = diff(a[c + 1], 1) * a[0] - a[c + 1] * diff(a[0], 1);
+      H_.emplace_back(H);
+      K_.emplace_back(K);
       for (int d = 0; d < 2; ++d) {
-        Hd_[c][d] = H_[c].derivative(d);
-        Kd_[c][d] = K_[c].derivative(d);
+        Hd_[c].emplace_back(diff(H, d));
+        Kd_[c].emplace_back(diff(K, d));
       }
       He_.emplace_back(H_[c]);
       Ke_.emplace_back(K_[c]);
@@ -243,8 +218,8 @@ class Pinch_system {
   }
 
  private:
-  std::array<Bivariate, 3> H_, K_;
-  std::array<std::array<Bivariate, 2>, 3> Hd_, Kd_;
+  std::vector<Bivariate> H_, K_;
+  std::array<std::vector<Bivariate>, 3> Hd_, Kd_;
   std::vector<Bivariate_enclosure> He_, Ke_;
   std::array<std::vector<Bivariate_enclosure>, 3> Hde_, Kde_;
 };
