@@ -167,8 +167,9 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     for (const auto& p : L.pinch_points)
       pinch.push_back({{"u", p.u},
                        {"v", p.v},
-                       {"box", {{CGAL::to_double(p.box[0][0]), CGAL::to_double(p.box[0][1])},
-                                {CGAL::to_double(p.box[1][0]), CGAL::to_double(p.box[1][1])}}},
+                       // outward-rounded: the double box still holds the exact point
+                       {"box", {{CGAL::to_interval(p.box[0][0]).first, CGAL::to_interval(p.box[0][1]).second},
+                                {CGAL::to_interval(p.box[1][0]).first, CGAL::to_interval(p.box[1][1]).second}}},
                        {"kernel_direction", p.chart == 0 ? "(1, m)" : "(m, 1)"},
                        {"m", CGAL::to_double((p.m[0] + p.m[1]) / 2)}});
     j["pinch_points"] = pinch;
@@ -322,10 +323,14 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << " traced points with partner in the domain (" << proved << "/" << total
               << " genuine/phantom status proved), max residual " << worst << "\n";
   }
-  if (L.self_intersection)
+  if (L.self_intersection) {
     std::cout << "  " << L.pinch_points.size() << " pinch point(s) of the patch in the box"
               << (L.pinch_points_complete ? " (all, proved)" : " (search incomplete: " + L.pinch_points_note + ")")
               << "\n";
+    for (const auto& p : L.pinch_points)
+      std::cout << "    pinch point (" << p.u << ", " << p.v << "), kernel direction "
+                << (p.chart == 0 ? "(1, m)" : "(m, 1)") << " with m = " << CGAL::to_double((p.m[0] + p.m[1]) / 2) << "\n";
+  }
   if (!L.split_points.empty())
     std::cout << "  " << L.split_points.size()
               << " certified split point(s): genuine parts end inside the box where the partner reaches the domain's "
