@@ -443,3 +443,21 @@ TEST_CASE("subdivision: known triple points at irrational points are resolved by
   o.multiple_points = {Known_multiple_point{p.enclosure, 1}};
   CHECK_THROWS_AS(subdivide_curve_in_box(three, Parameter_box{}, o), Invalid_input);
 }
+
+TEST_CASE("subdivision: singular points on the box's boundary are reported as not certified, naming the box",
+          "[topology][subdivision]") {
+  // A node at the corner (0, 0), with one branch entering the box (u = v) and one touching it only there
+  // (u + 2v = 0); a node on the edge v = 0 at u = 1/2 (2u - 1 = +-v); an isolated point at the corner. Not handled
+  // by the subdivision yet: the documented answer is "not certified", with the box named, never a guess.
+  struct Case {
+    P2 D;
+    const char* where;
+  };
+  for (const Case& c : {Case{(u - v) * (u + 2 * v), "(0.000000, 0.000000)"},
+                        Case{(2 * u - 1 - v) * (2 * u - 1 + v), "(0.500000, 0.000000)"},
+                        Case{u * u + v * v, "(0.000000, 0.000000)"}}) {
+    const auto r = subdivide_curve_in_box(c.D, Parameter_box{});
+    CHECK_FALSE(r.certified);
+    CHECK(r.reason.find(c.where) != std::string::npos);
+  }
+}
