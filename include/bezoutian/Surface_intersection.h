@@ -384,13 +384,18 @@ inline bool verified(const Locus_point& q) {
   return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
 }
 
-inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_equations& eq, const Locus_split_point& sp,
-                                                                  int bits) {
-  if (bits < 1 || bits > 100000) throw Invalid_input("refine_split_point: bits must be in [1, 100000]");
+// The certified crossing that a split point reports (its side and proved box).
+inline Partner_domain_crossing crossing_of(const Locus_split_point& sp) {
   Partner_domain_crossing c;
   c.side = {sp.point, sp.coordinate, sp.bound};
   for (int d = 0; d < 4; ++d) c.box[d] = Double_interval{sp.box[d][0], sp.box[d][1]};
-  const auto r = refine_crossing(eq, c, bits);
+  return c;
+}
+
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_equations& eq, const Locus_split_point& sp,
+                                                                  int bits) {
+  if (bits < 1 || bits > 100000) throw Invalid_input("refine_split_point: bits must be in [1, 100000]");
+  const auto r = refine_crossing(eq, crossing_of(sp), bits);
   if (!r) throw Error("refine_split_point: the refinement of the split point's box failed");
   return *r;
 }
@@ -467,10 +472,8 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     for (const Locus_split_point& sp : L.split_points)
       if (sp.arc == k && sp.index < split.size()) {
         split[sp.index] = true;
-        Partner_domain_crossing& c = crossings[sp.index];
-        c.side = {sp.point, sp.coordinate, sp.bound};
-        for (int d = 0; d < 4; ++d) c.box[d] = Double_interval{sp.box[d][0], sp.box[d][1]};
-        split_boxes[sp.index] = &c;
+        crossings[sp.index] = crossing_of(sp);
+        split_boxes[sp.index] = &crossings[sp.index];
       }
     std::vector<std::array<double, 2>> partner;
     std::vector<bool> known, float_genuine;
