@@ -256,3 +256,79 @@ TEST_CASE("partner equations restricted to a box enclose the exact values and de
     }
   }
 }
+
+// interval_horner (the hot loop of the exclusions) rounds to nearest and widens once at the end by an a-priori
+// bound (Lazy_horner). Checked against exact rational evaluation: at point arguments where massive cancellation
+// makes the exact value 0 ((x - a)^n expanded, a a double), and at the ends and inside of random intervals with
+// coefficients of mixed signs and magnitudes 2^-40 .. 2^40; the enclosures must also be narrow (a test that
+// cannot fail would accept infinite ones).
+TEST_CASE("interval Horner with one rounding bound encloses exact values", "[surface][witness]") {
+  using D = internal::Double_interval;
+  std::mt19937 g(7);
+  std::uniform_int_distribution<int> num(-1000, 1000), expo(-40, 40), pick(0, 64);
+  auto exact_1 = [](const std::vector<Q>& c, const Q& x) {
+    Q r = 0;
+    for (std::size_t i = c.size(); i-- > 0;) r = r * x + c[i];
+    return r;
+  };
+  auto enclose = [](const std::vector<Q>& c) {
+    std::vector<D> r;
+    for (const Q& q : c) r.push_back(D::of(q));
+    return r;
+  };
+  int narrow = 0;
+  for (int n = 1; n <= 12; ++n) {  // (x - a)^n at x = a: the exact value 0 after cancellation
+    const double a = 0.1 * n + 0.3;  // a double: the argument is a point interval
+    std::vector<Q> c{Q(1)};
+    for (int k = 0; k < n; ++k) {  // multiply by (x - a)
+      std::vector<Q> d(c.size() + 1, Q(0));
+      for (std::size_t i = 0; i < c.size(); ++i) {
+        d[i + 1] += c[i];
+        d[i] -= c[i] * Q(a);
+      }
+      c = d;
+    }
+    const D r = internal::interval_horner(enclose(c), D{a, a});
+    CHECK(r.lo <= 0);
+    CHECK(0 <= r.hi);
+    CHECK(r.hi - r.lo < 1e-14 * n * std::pow(2 * a, n));  // n roundings of the magnitude sum |c_i| a^i = (2a)^n
+    // bivariate: rows (x - a)^n y^j with y = [0.5, 0.75]
+    std::vector<std::vector<D>> c2(3, enclose(c));
+    const D r2 = internal::interval_horner(c2, D{a, a}, D{0.5, 0.75});
+    CHECK(r2.lo <= 0);
+    CHECK(0 <= r2.hi);
+  }
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 1 + trial % 9, rows = 1 + trial % 4;
+    std::vector<std::vector<Q>> c(rows, std::vector<Q>(n + 1));
+    for (auto& row : c)
+      for (Q& q : row) {
+        const int e = expo(g);
+        q = Q(num(g)) * (e >= 0 ? Q(1L << (e / 2)) * Q(1L << (e - e / 2)) : Q(1) / (Q(1L << (-e / 2)) * Q(1L << (-e - (-e / 2)))));
+      }
+    int p = pick(g), q = pick(g);
+    if (p > q) std::swap(p, q);
+    const Q x0(p, 32), x1(q, 32), y0(pick(g), 64), y1 = y0 + Q(1, 16);  // nonnegative arguments (the fast path)
+    const D X = D::hull(x0, x1), Y = D::hull(y0, y1);
+    std::vector<std::vector<D>> ci;
+    for (const auto& row : c) ci.push_back(enclose(row));
+    const D r1 = internal::interval_horner(ci[0], X), r2 = internal::interval_horner(ci, X, Y);
+    for (int s = 0; s <= 4; ++s) {
+      const Q x = x0 + (x1 - x0) * Q(s, 4), y = y0 + (y1 - y0) * Q(4 - s, 4);
+      const Q e1 = exact_1(c[0], x);
+      Q e2 = 0;
+      for (std::size_t j = c.size(); j-- > 0;) e2 = e2 * y + exact_1(c[j], x);
+      INFO("trial " << trial << " sample " << s);
+      CHECK(Q(r1.lo) <= e1);
+      CHECK(e1 <= Q(r1.hi));
+      CHECK(Q(r2.lo) <= e2);
+      CHECK(e2 <= Q(r2.hi));
+    }
+    if (p == q) {  // a point argument: the width is rounding only
+      double mag = 0;
+      for (const Q& q : c[0]) mag = std::max(mag, std::fabs(CGAL::to_double(q)));
+      narrow += r1.hi - r1.lo <= 1e-12 * mag * (n + 1) * 4;
+    }
+  }
+  CHECK(narrow >= 1);
+}

@@ -79,15 +79,74 @@ struct Double_interval {
   }
   bool contains_zero() const { return !(lo > 0) && !(hi < 0); }
   double mid() const { return 0.5 * (lo + hi); }
-  /// x * y for y with 0 <= y.lo, y.hi finite: the extreme products are x.lo * (y.lo or y.hi) and x.hi * (y.hi or
-  /// y.lo) by the signs of x.lo, x.hi.
-  static Double_interval mul_nonnegative(const Double_interval& x, const Double_interval& y) {
-    const double a = x.lo * (x.lo >= 0 ? y.lo : y.hi), b = x.hi * (x.hi >= 0 ? y.hi : y.lo);
-    if (std::isnan(a) || std::isnan(b)) return {-HUGE_VAL, HUGE_VAL};
-    return widen(a, b);
-  }
-  static Double_interval add(const Double_interval& x, const Double_interval& y) { return widen(x.lo + y.lo, x.hi + y.hi); }
 };
+
+/// Interval Horner evaluation for arguments x with 0 <= x.lo and x.hi finite (parameters in a domain, the hot
+/// loop of the phantom exclusion), in round-to-nearest with one rounding bound at the end instead of outward
+/// rounding at every operation (3-4 times faster). Why it encloses: for x >= 0 the exact ends of r * x + c are
+/// r.lo * (r.lo >= 0 ? x.lo : x.hi) + c.lo and r.hi * (r.hi >= 0 ? x.hi : x.lo) + c.hi, so exact arithmetic on the
+/// computed ends gives a valid enclosure at every step; moving the ends of r outward by Delta moves those of
+/// r * x + c by at most Delta * x.hi; and each rounded product or sum errs by at most 2^-53 of its magnitude. The
+/// magnitude at each rounding, times the later powers of x.hi, is a part of the Horner sum mag of |c| x.hi^i, and
+/// the rows of a bivariate scheme are disjoint parts; so s roundings per row and outer step move the ends by at
+/// most about s 2^-53 mag. We widen by s 2^-52 mag (a factor 2 for the rounding of mag itself) plus 2^-1000 per
+/// rounding for underflow.
+struct Lazy_horner {
+  double lo = 0, hi = 0, mag = 0;
+  int steps = 0;  // roundings: of each row (disjoint parts of mag) plus of the outer scheme
+  void step(const Double_interval& x, double clo, double chi) {
+    lo = lo * (lo >= 0 ? x.lo : x.hi) + clo;
+    hi = hi * (hi >= 0 ? x.hi : x.lo) + chi;
+    mag = mag * x.hi + std::max(std::fabs(clo), std::fabs(chi));
+    steps += 2;
+  }
+  /// r * x + s for an inner evaluation s (its own rounding path joins this one)
+  void step(const Double_interval& x, const Lazy_horner& s) {
+    lo = lo * (lo >= 0 ? x.lo : x.hi) + s.lo;
+    hi = hi * (hi >= 0 ? x.hi : x.lo) + s.hi;
+    mag = mag * x.hi + s.mag;
+    steps = std::max(steps, s.steps) + 2;
+  }
+  Double_interval result() const {
+    const double e = mag * (double(steps) * 0x1p-52) + double(steps + 1) * 0x1p-1000;
+    if (!std::isfinite(e) || std::isnan(lo) || std::isnan(hi)) return {-HUGE_VAL, HUGE_VAL};
+    return Double_interval::widen(lo - e, hi + e);
+  }
+};
+inline bool nonnegative_argument(const Double_interval& x) { return x.lo >= 0 && std::isfinite(x.hi); }
+
+/// c[0] + c[1] x + ... over the interval x (an enclosure).
+inline Double_interval interval_horner(const std::vector<Double_interval>& c, const Double_interval& x) {
+  if (nonnegative_argument(x)) {
+    Lazy_horner r;
+    for (std::size_t i = c.size(); i-- > 0;) r.step(x, c[i].lo, c[i].hi);
+    return r.result();
+  }
+  Double_interval r{0, 0};
+  for (std::size_t i = c.size(); i-- > 0;) r = r * x + c[i];
+  return r;
+}
+
+/// sum c[j][i] x0^i x1^j over the box x0 x x1 (an enclosure).
+inline Double_interval interval_horner(const std::vector<std::vector<Double_interval>>& c, const Double_interval& x0,
+                                       const Double_interval& x1) {
+  if (nonnegative_argument(x0) && nonnegative_argument(x1)) {  // the usual case: parameters in a domain
+    Lazy_horner r;
+    for (std::size_t j = c.size(); j-- > 0;) {
+      Lazy_horner s;
+      for (std::size_t i = c[j].size(); i-- > 0;) s.step(x0, c[j][i].lo, c[j][i].hi);
+      r.step(x1, s);
+    }
+    return r.result();
+  }
+  Double_interval r{0, 0};
+  for (std::size_t j = c.size(); j-- > 0;) {
+    Double_interval s{0, 0};
+    for (std::size_t i = c[j].size(); i-- > 0;) s = s * x0 + c[j][i];
+    r = r * x1 + s;
+  }
+  return r;
+}
 
 /// The partner equations of a locus (see the header comment): which patch points P, Q a pair (x, y) defines.
 class Partner_equations {
@@ -253,13 +312,7 @@ class Partner_equations {
 
  private:
   static Double_interval horner_1(const std::vector<Double_interval>& c, const Double_interval& x) {
-    Double_interval r{0, 0};
-    if (x.lo >= 0 && std::isfinite(x.hi)) {
-      for (std::size_t i = c.size(); i-- > 0;) r = Double_interval::add(Double_interval::mul_nonnegative(r, x), c[i]);
-    } else {
-      for (std::size_t i = c.size(); i-- > 0;) r = r * x + c[i];
-    }
-    return r;
+    return interval_horner(c, x);
   }
   // E = A_c(P) B_0(Q) - B_c(Q) A_0(P) and its Jacobian from the forms' values and partial derivatives at P, Q.
   void combine(const std::array<std::array<Double_interval, 3>, 4>& a, const std::array<std::array<Double_interval, 3>, 4>& b,
@@ -352,24 +405,7 @@ class Partner_equations {
   }
   static Double_interval horner_interval(const std::vector<std::vector<Double_interval>>& c,
                                          const std::array<Double_interval, 2>& x) {
-    if (x[0].lo >= 0 && x[1].lo >= 0 && std::isfinite(x[0].hi) && std::isfinite(x[1].hi)) {
-      // the usual case (parameters in a domain [0,1]): products by a nonnegative interval need two
-      // multiplications instead of four (the hot loop of the phantom exclusion)
-      Double_interval r{0, 0};
-      for (std::size_t j = c.size(); j-- > 0;) {
-        Double_interval s{0, 0};
-        for (std::size_t i = c[j].size(); i-- > 0;) s = Double_interval::add(Double_interval::mul_nonnegative(s, x[0]), c[j][i]);
-        r = Double_interval::add(Double_interval::mul_nonnegative(r, x[1]), s);
-      }
-      return r;
-    }
-    Double_interval r{0, 0};
-    for (std::size_t j = c.size(); j-- > 0;) {
-      Double_interval s{0, 0};
-      for (std::size_t i = c[j].size(); i-- > 0;) s = s * x[0] + c[j][i];
-      r = r * x[1] + s;
-    }
-    return r;
+    return interval_horner(c, x[0], x[1]);
   }
   static std::array<std::complex<double>, 3> jet_double(const Form& F, const std::array<std::complex<double>, 2>& x) {
     return {horner_double(F.df, x), horner_double(F.dfu, x), horner_double(F.dfv, x)};

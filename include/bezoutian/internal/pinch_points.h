@@ -68,22 +68,7 @@ struct Bivariate_enclosure {
     }
   }
   Double_interval operator()(const Double_interval& u, const Double_interval& v) const {
-    if (u.lo >= 0 && v.lo >= 0 && std::isfinite(u.hi) && std::isfinite(v.hi)) {  // two products instead of four
-      Double_interval r{0, 0};
-      for (std::size_t j = c.size(); j-- > 0;) {
-        Double_interval s{0, 0};
-        for (std::size_t i = c[j].size(); i-- > 0;) s = Double_interval::add(Double_interval::mul_nonnegative(s, u), c[j][i]);
-        r = Double_interval::add(Double_interval::mul_nonnegative(r, v), s);
-      }
-      return r;
-    }
-    Double_interval r{0, 0};
-    for (std::size_t j = c.size(); j-- > 0;) {
-      Double_interval s{0, 0};
-      for (std::size_t i = c[j].size(); i-- > 0;) s = s * u + c[j][i];
-      r = r * v + s;
-    }
-    return r;
+    return interval_horner(c, u, v);
   }
 };
 
