@@ -54,8 +54,9 @@ struct Surface_intersection_options {
   /// Prove the genuine / phantom status along the arcs (internal/certified_lifting.h; subdivision topologies
   /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
   bool certify_lifting = true;
-  /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus; the
-  /// spans left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
+  /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus, and as
+  /// many again for the fallback on spans without a followed partner (internal/certified_lifting.h); the spans
+  /// left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
   /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
   std::size_t lifting_exclusion_budget = 5000;
   /// Self-intersection: search the pinch points of the patch in the box (internal/pinch_points.h), with at most
@@ -461,7 +462,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
                      Lift lift_point) {
   if (L.topology_method != "subdivision" || !o.certify_lifting) return;
   Exclusion_budget budget;
-  budget.left = o.lifting_exclusion_budget;
+  budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     // the split points: their status is their own proof (about the exact crossing); the spans next to them are

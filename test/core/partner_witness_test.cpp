@@ -5,6 +5,7 @@
 // never find a partner inside the domain for a point of a region proved free of them.
 #include <catch2/catch.hpp>
 
+#include <bezoutian/internal/certified_lifting.h>
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/io/Geometry_document.h>
 #include "power_patch.h"
@@ -331,4 +332,31 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
     }
   }
   CHECK(narrow >= 1);
+}
+
+// The strip exclusion (internal/certified_lifting.h, exclude_strips: the phantom proof of spans whose partner
+// cannot be followed) on the folded patch (u - 3/10)^2, v^2, (u - 3/10)(v - 1/3)), whose double line v = 1/3 has the
+// partner Q = (3/5 - u, 1/3): genuine for u in [0, 3/5], phantom beyond (Q leaves through u = 0). A strip over a
+// genuine span must never be proved; strips over phantom spans are. Spans are given in runs (touching) and apart.
+TEST_CASE("strip exclusion: never over genuine points of a closed-form double line", "[surface][lifting]") {
+  using D = internal::Double_interval;
+  const Patch phi = from_power({"(u-3/10)^2", "v^2", "(u-3/10)*(v-1/3)"}, 3, 2);
+  const internal::Partner_equations eq(phi);
+  const Parameter_box domain{Q(0), Q(1), Q(0), Q(1)};
+  const Parameter_box cell{Q(0), Q(1), Q(1, 4), Q(1, 2)};  // v = 1/3 is a graph over u in it
+  internal::Exclusion_budget budget;
+  // genuine: u in [0.1, 0.2] and a run [0.5, 0.55], [0.55, 0.62] reaching across the split at u = 0.6
+  const std::vector<D> genuine{D{0.1, 0.2}, D{0.5, 0.55}, D{0.55, 0.62}};
+  for (bool p : internal::exclude_strips(eq, domain, 0, genuine, cell, nullptr, budget)) CHECK_FALSE(p);
+  // phantom: u in [0.7, 0.8], [0.8, 0.9] (a run) and [0.95, 1]
+  const std::vector<D> phantom{D{0.7, 0.8}, D{0.8, 0.9}, D{0.95, 1.0}};
+  const std::vector<bool> proved = internal::exclude_strips(eq, domain, 0, phantom, cell, nullptr, budget);
+  REQUIRE(proved.size() == 3);
+  for (bool p : proved) CHECK(p);
+  // a span beside a genuine one in the same run: the failure near u = 0.55 must not leak into [0.62, 0.7]'s proof
+  // nor let [0.55, 0.62] pass
+  const std::vector<bool> mixed =
+      internal::exclude_strips(eq, domain, 0, {D{0.55, 0.62}, D{0.62, 0.7}, D{0.7, 0.8}}, cell, nullptr, budget);
+  CHECK_FALSE(mixed[0]);
+  CHECK(mixed[2]);
 }

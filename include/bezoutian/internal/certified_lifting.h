@@ -40,12 +40,21 @@ namespace internal {
 enum class Partner_status { genuine, phantom, undecided, outside };
 
 /// Bounds the number of exclusion tests (no_genuine_partner, up to 1024 partner pieces each) of one locus: the
-/// phantom proofs are the costly part; when the budget is spent the remaining spans stay undecided.
+/// phantom proofs are the costly part; when the budget is spent the remaining spans stay undecided. Two separate
+/// counts: the exclusions next to a followed partner proved outside the domain (`left`: one per span at most,
+/// cheap and mostly successful), and the fallback that covers a span's whole strip when no partner could be
+/// followed (`fallback_left`: up to 16 tests per span, often failing). With one shared count the fallback on the
+/// first edges starved the cheap proofs of later ones.
 struct Exclusion_budget {
   std::size_t left = std::numeric_limits<std::size_t>::max();
-  bool take() {
-    if (left == 0) return false;
-    --left;
+  std::size_t fallback_left = std::numeric_limits<std::size_t>::max();
+  bool take() { return take(left); }
+  bool take_fallback() { return take(fallback_left); }
+
+ private:
+  static bool take(std::size_t& n) {
+    if (n == 0) return false;
+    --n;
     return true;
   }
 };
@@ -221,62 +230,28 @@ inline Partner_status status_from_partner(const Partner_equations& eq, const Par
 /// Genuine if P and Q lie in the partner domain over all of K. Phantom if the partner found is outside and no
 /// point of T x K_v (which holds the arc points over T) has any partner in the domain (no_genuine_partner,
 /// started from `start()`: partner pieces covering every candidate partner of the cell's points, or null).
+/// Undecided if no partner can be followed (then the caller may try exclude_strips on runs of such spans).
 inline Partner_status classify_partner_span(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                             int axis, const Double_interval& T, const std::array<Double_interval, 3>& W0,
                                             const Parameter_box& cell,
                                             const std::function<const std::vector<std::array<Double_interval, 2>>*()>& start,
-                                            std::array<Double_interval, 2>* partner = nullptr,
-                                            bool try_cell_exclusion = true, bool defer_exclusion = false,
+                                            std::array<Double_interval, 2>* partner = nullptr, bool defer_exclusion = false,
                                             std::array<Double_interval, 3>* enclosure = nullptr,
                                             Exclusion_budget* budget = nullptr) {
   using D = Double_interval;
-  // Fallback phantom proof without a partner: the arc points over T lie in T x (the cell's range), so excluding
-  // every partner there suffices (a wider box than T x K_v, but no Krawczyk proof is needed). Costly when it
-  // fails: the caller asks for it only where the floating-point lifting saw phantom points.
-  auto cell_phantom = [&]() {
-    if (unbounded || !try_cell_exclusion) return Partner_status::undecided;
-    // The strip T x (the cell's range) holds the arc over T. It is covered by about square boxes (at most
-    // max_boxes), and a box whose exclusion fails is halved along its longer side: points of the strip far from
-    // D = 0 have no partner at all, so only the boxes near the arc need to be thin. At most max_boxes tests.
-    const int max_boxes = 16;
-    const Rational &c0 = axis == 0 ? cell.v0 : cell.u0, &c1 = axis == 0 ? cell.v1 : cell.u1;
-    const double ratio = CGAL::to_double(c1 - c0) / std::max(T.hi - T.lo, 1e-300);
-    const int squares = std::max(1, std::min(int(std::ceil(ratio)), max_boxes));
-    std::vector<Parameter_box> todo;
-    for (int j = 0; j < squares; ++j) {
-      const Rational a = c0 + (c1 - c0) * j / squares, b = j + 1 == squares ? c1 : c0 + (c1 - c0) * (j + 1) / squares;
-      todo.push_back(axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), a, b}
-                               : Parameter_box{a, b, Rational(T.lo), Rational(T.hi)});
-    }
-    for (int tests = 0; !todo.empty(); ++tests) {
-      const Parameter_box box = todo.back();
-      todo.pop_back();
-      if (tests >= max_boxes || (budget && !budget->take())) return Partner_status::undecided;
-      if (no_genuine_partner(eq, box, domain, 256, start())) continue;
-      if (box.u1 - box.u0 >= box.v1 - box.v0) {
-        const Rational m = (box.u0 + box.u1) / 2;
-        todo.push_back({box.u0, m, box.v0, box.v1});
-        todo.push_back({m, box.u1, box.v0, box.v1});
-      } else {
-        const Rational m = (box.v0 + box.v1) / 2;
-        todo.push_back({box.u0, box.u1, box.v0, m});
-        todo.push_back({box.u0, box.u1, m, box.v1});
-      }
-    }
-    return Partner_status::phantom;
-  };
+  const Partner_status no_partner = Partner_status::undecided;  // (the caller may try exclude_strips)
   std::array<D, 3> W = W0, K;
   const bool proved = prove_zero_curve(eq, axis, T, W, K);
-  if (!proved) return cell_phantom();
+  if (!proved) return no_partner;
   {  // the anchor
     std::array<D, 3> at = W;
     const D t{T.mid(), T.mid()};
-    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return cell_phantom();
+    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return no_partner;
     const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return cell_phantom();
+    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return no_partner;
   }
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
-    return cell_phantom();  // the trivial partner y = 0 is not a partner
+    return no_partner;  // the trivial partner y = 0 is not a partner
   if (partner) *partner = {K[1], K[2]};
   if (enclosure) *enclosure = K;
   const Partner_status st = status_from_partner(eq, domain, unbounded, axis, T, K, nullptr, true);
@@ -459,6 +434,74 @@ struct Edge_partner_certificate {
   double undecided_fraction = 1;            ///< undecided share of the edge's spans (by graph-coordinate length)
 };
 
+/// Phantom proof without a followed partner, for a run of spans T_1, ..., T_r (sorted, disjoint interiors) of
+/// one graph piece of the cell: the arc points over T_j lie in the strip T_j x (the cell's range in the other
+/// coordinate), so excluding every partner in the domain on that strip proves T_j phantom. The strips of the
+/// hull of a run of touching spans are covered adaptively: roughly square boxes, each tested by
+/// no_genuine_partner (256 partner pieces) and halved along its longer side when the test fails, down to sides
+/// of a quarter of the run's shortest span; points far from D = 0 have no partner at all, so only the boxes near
+/// the arc become small. One cover for the run instead of one per span saves the repeated tests far from the arc.
+/// Returns, for each span, whether its whole strip was covered by excluded boxes (closed boxes: a failed box
+/// that only touches a strip's edge leaves it proved, the edge lying in the excluded neighbour too).
+inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Parameter_box& domain, int axis,
+                                        const std::vector<Double_interval>& spans, const Parameter_box& cell,
+                                        const std::vector<std::array<Double_interval, 2>>* start,
+                                        Exclusion_budget& budget) {
+  std::vector<bool> proved(spans.size(), false);
+  const Rational &c0 = axis == 0 ? cell.v0 : cell.u0, &c1 = axis == 0 ? cell.v1 : cell.u1;
+  const double range = CGAL::to_double(c1 - c0);
+  std::size_t a = 0;
+  while (a < spans.size()) {
+    std::size_t b = a + 1;  // the run [a, b): spans that touch
+    double shortest = spans[a].hi - spans[a].lo;
+    while (b < spans.size() && spans[b].lo <= spans[b - 1].hi) shortest = std::min(shortest, spans[b].hi - spans[b].lo), ++b;
+    const Rational t0(spans[a].lo), t1(spans[b - 1].hi);
+    const double width = CGAL::to_double(t1 - t0), min_side = 0.25 * std::max(shortest, 1e-300);
+    auto box_of = [&](const Rational& s0, const Rational& s1, const Rational& o0, const Rational& o1) {
+      return axis == 0 ? Parameter_box{s0, s1, o0, o1} : Parameter_box{o0, o1, s0, s1};
+    };
+    // about square boxes of side min(width, range)
+    const int along = std::max(1, std::min(64, int(std::ceil(width / std::max(range, 1e-300))))),
+              across = std::max(1, std::min(64, int(std::ceil(range / std::max(width, 1e-300)))));
+    struct Piece {
+      Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
+    };
+    std::vector<Piece> todo;
+    for (int p = 0; p < along; ++p)
+      for (int q = 0; q < across; ++q)
+        todo.push_back({t0 + (t1 - t0) * p / along, p + 1 == along ? t1 : t0 + (t1 - t0) * (p + 1) / along,
+                        c0 + (c1 - c0) * q / across, q + 1 == across ? c1 : c0 + (c1 - c0) * (q + 1) / across});
+    std::vector<std::array<double, 2>> failed;  // graph-coordinate ranges of boxes not excluded
+    while (!todo.empty()) {
+      const Piece P = todo.back();
+      todo.pop_back();
+      if (budget.take_fallback() && no_genuine_partner(eq, box_of(P.s0, P.s1, P.o0, P.o1), domain, 256, start)) continue;
+      const double ws = CGAL::to_double(P.s1 - P.s0), wo = CGAL::to_double(P.o1 - P.o0);
+      if (budget.fallback_left == 0 || std::max(ws, wo) <= min_side) {
+        failed.push_back({CGAL::to_double(P.s0), CGAL::to_double(P.s1)});
+        continue;
+      }
+      if (ws >= wo) {
+        const Rational m = (P.s0 + P.s1) / 2;
+        todo.push_back({P.s0, m, P.o0, P.o1});
+        todo.push_back({m, P.s1, P.o0, P.o1});
+      } else {
+        const Rational m = (P.o0 + P.o1) / 2;
+        todo.push_back({P.s0, P.s1, P.o0, m});
+        todo.push_back({P.s0, P.s1, m, P.o1});
+      }
+    }
+    for (std::size_t j = a; j < b; ++j) {
+      bool ok = true;  // (the failed ranges are the rounded-to-double ends of rational boxes: widened by one ulp)
+      for (const auto& f : failed)
+        if (Double_interval::next(f[0], false) < spans[j].hi && spans[j].lo < Double_interval::next(f[1], true)) ok = false;
+      proved[j] = ok;
+    }
+    a = b;
+  }
+  return proved;
+}
+
 /// A half-branch H of D = 0 inside the box of a singular point p, from a crossing c of the box's edge to p
 /// (graph_axis -1: not a proved graph). Chained proof along the traced points from c: with t the coordinate
 /// along the line of c's edge's normal (u if c lies on a line u = const),
@@ -549,6 +592,11 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       D T, V;
     };
     std::vector<Outside_span> run;
+    struct Strip {  // an undecided span near phantom points, and the polyline points whose status it gives
+      D T;
+      std::size_t first_point, second_point;  // (npos: none)
+    };
+    std::vector<Strip> strips;
     auto flush = [&]() {
       if (run.empty()) return;
       D H = run[0].T, HV = run[0].V;
@@ -586,6 +634,7 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         const double r = 0.5 * std::fabs(y1 - y0) + 0.25 * len + 1e-9 * (1 + std::fabs(y0));
         W[1 + c] = D{std::min(y0, y1) - r, std::max(y0, y1) + r};
       }
+      const bool increasing = a.mid() <= b.mid();  // the polyline may run either way along the graph coordinate
       // halve undecided spans: a partner leaving the domain inside the span, or a span too long to contract
       struct Span {
         D T;
@@ -613,37 +662,57 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
             split && !unbounded
                 ? classify_span_at_split(eq, domain, axis, s.T, Ws, pc.cell, *split,
                                          split->box[axis].mid() < s.T.mid(), &budget, &y, &K)
-                : classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y,
-                                        phantom_seen && s.depth <= 2, s.depth == 0, &K, &budget);
+                : classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y, s.depth == 0, &K,
+                                        &budget);
         if (st == Partner_status::outside) {  // the whole span (depth 0): joins the run, decided at the flush
           run.push_back({i, s.T, K[0]});
           left = right = Partner_status::outside;
           continue;
         }
         // halving pays where the genuine status changes or Krawczyk needs a shorter span; between two phantom
-        // points it mostly repeats failing exclusions (costly), so it stops early there
+        // points the partner often cannot be followed at all (complex, or the trivial one), so it stops early there
         const bool phantom_both = !float_genuine[i] && !float_genuine[i + 1];
-        const int limit = phantom_both ? (budget.left == 0 ? 0 : 2) : max_halvings;
+        const int limit = phantom_both ? 2 : max_halvings;
         if (st == Partner_status::undecided && s.depth < limit) {
           const double mid = s.T.mid();
           stack.push_back({D{mid, s.T.hi}, s.depth + 1});
           stack.push_back({D{s.T.lo, mid}, s.depth + 1});
           continue;
         }
-        if (st == Partner_status::undecided) undecided += s.T.hi - s.T.lo;
+        if (st == Partner_status::undecided) {
+          if (phantom_seen && !unbounded) {  // the strip exclusion, for the whole piece at once (below)
+            const std::size_t npos = std::size_t(-1);
+            strips.push_back({s.T, s.T.lo <= T.lo ? (increasing ? i : i + 1) : npos,
+                              s.T.hi >= T.hi ? (increasing ? i + 1 : i) : npos});
+          } else {
+            undecided += s.T.hi - s.T.lo;
+          }
+        }
         if (s.T.lo <= T.lo) left = st, left_y = y, left_K = K, left_T = s.T;
         if (s.T.hi >= T.hi) right = st, right_y = y, right_K = K, right_T = s.T;
       }
       if (left == Partner_status::outside) continue;  // pending in the run
       flush();
-      // the polyline may run either way along the graph coordinate
-      const bool increasing = a.mid() <= b.mid();
       merge(i, increasing ? left : right, tight(i, increasing ? left : right, increasing ? left_y : right_y,
                                                 increasing ? left_K : right_K, increasing ? left_T : right_T));
       merge(i + 1, increasing ? right : left, tight(i + 1, increasing ? right : left, increasing ? right_y : left_y,
                                                     increasing ? right_K : left_K, increasing ? right_T : left_T));
     }
     flush();
+    if (!strips.empty()) {  // spans without a followed partner, near floating-point phantom points
+      std::sort(strips.begin(), strips.end(), [](const Strip& x, const Strip& y) { return x.T.lo < y.T.lo; });
+      std::vector<D> spans;
+      for (const Strip& st : strips) spans.push_back(st.T);
+      const std::vector<bool> proved = exclude_strips(eq, domain, axis, spans, pc.cell, start(), budget);
+      for (std::size_t j = 0; j < strips.size(); ++j) {
+        if (!proved[j]) {
+          undecided += strips[j].T.hi - strips[j].T.lo;
+          continue;
+        }
+        for (std::size_t p : {strips[j].first_point, strips[j].second_point})
+          if (p < n && out.point_status[p] == Partner_status::undecided) merge(p, Partner_status::phantom, none);
+      }
+    }
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
   return out;
