@@ -439,8 +439,10 @@ struct Edge_partner_certificate {
 /// coordinate), so excluding every partner in the domain on that strip proves T_j phantom. The strips of the
 /// hull of a run of touching spans are covered adaptively: roughly square boxes, each tested by
 /// no_genuine_partner (256 partner pieces) and halved along its longer side when the test fails, down to sides
-/// of a quarter of the run's shortest span; points far from D = 0 have no partner at all, so only the boxes near
-/// the arc become small. One cover for the run instead of one per span saves the repeated tests far from the arc.
+/// of a quarter of the shortest span it meets (at most 16 tests per span of the run); points far from D = 0 have
+/// no partner at all, so only the boxes near the arc become small. One cover for the run instead of one per span
+/// saves the repeated tests far from the arc. The cover runs along the graph coordinate, and a run whose first
+/// four spans all fail is given up (hopeless runs would otherwise spend the budget of all others).
 /// Returns, for each span, whether its whole strip was covered by excluded boxes (closed boxes: a failed box
 /// that only touches a strip's edge leaves it proved, the edge lying in the excluded neighbour too).
 inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Parameter_box& domain, int axis,
@@ -453,10 +455,9 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
   std::size_t a = 0;
   while (a < spans.size()) {
     std::size_t b = a + 1;  // the run [a, b): spans that touch
-    double shortest = spans[a].hi - spans[a].lo;
-    while (b < spans.size() && spans[b].lo <= spans[b - 1].hi) shortest = std::min(shortest, spans[b].hi - spans[b].lo), ++b;
+    while (b < spans.size() && spans[b].lo <= spans[b - 1].hi) ++b;
     const Rational t0(spans[a].lo), t1(spans[b - 1].hi);
-    const double width = CGAL::to_double(t1 - t0), min_side = 0.25 * std::max(shortest, 1e-300);
+    const double width = CGAL::to_double(t1 - t0);
     auto box_of = [&](const Rational& s0, const Rational& s1, const Rational& o0, const Rational& o1) {
       return axis == 0 ? Parameter_box{s0, s1, o0, o1} : Parameter_box{o0, o1, s0, s1};
     };
@@ -466,37 +467,66 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
     struct Piece {
       Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
     };
-    std::vector<Piece> todo;
-    for (int p = 0; p < along; ++p)
+    std::vector<Piece> todo;  // a stack, processed from low to high graph coordinate (depth first)
+    for (int p = along; p-- > 0;)
       for (int q = 0; q < across; ++q)
         todo.push_back({t0 + (t1 - t0) * p / along, p + 1 == along ? t1 : t0 + (t1 - t0) * (p + 1) / along,
                         c0 + (c1 - c0) * q / across, q + 1 == across ? c1 : c0 + (c1 - c0) * (q + 1) / across});
-    std::vector<std::array<double, 2>> failed;  // graph-coordinate ranges of boxes not excluded
+    // A box that is neither excluded nor split makes the spans it meets undecided ("lost"): those are the spans
+    // meeting its graph range [s0, s1] with positive length (rounded outward: the box ends are rationals). A box
+    // meeting lost spans only is not tested any more: near a genuine point (the strip of a span next to a split
+    // point) every small box fails, and refining there would spend the whole budget on one span.
+    std::vector<bool> lost(b - a, false);
+    auto meets = [&](std::size_t j, const Piece& P) {
+      return Double_interval::next(CGAL::to_double(P.s0), false) < spans[j].hi &&
+             spans[j].lo < Double_interval::next(CGAL::to_double(P.s1), true);
+    };
+    auto all_lost = [&](const Piece& P) {
+      for (std::size_t j = a; j < b; ++j)
+        if (!lost[j - a] && meets(j, P)) return false;
+      return true;
+    };
+    auto shortest_met = [&](const Piece& P) {  // boxes are split down to a quarter of the spans they meet
+      double w = HUGE_VAL;
+      for (std::size_t j = a; j < b; ++j)
+        if (meets(j, P)) w = std::min(w, spans[j].hi - spans[j].lo);
+      return std::max(w, 1e-300);
+    };
+    std::size_t tests = 0;
+    const std::size_t max_tests = 16 * (b - a) + 16;  // as many as 16 per span
     while (!todo.empty()) {
       const Piece P = todo.back();
       todo.pop_back();
-      if (budget.take_fallback() && no_genuine_partner(eq, box_of(P.s0, P.s1, P.o0, P.o1), domain, 256, start)) continue;
+      {  // the spans left of P are decided; a run whose first four decided spans are all lost is given up
+        std::size_t won = 0, gone = 0;
+        for (std::size_t j = a; j < b && spans[j].hi <= CGAL::to_double(P.s0); ++j) (lost[j - a] ? gone : won) += 1;
+        if (won == 0 && gone >= 4) {
+          std::fill(lost.begin(), lost.end(), true);
+          break;
+        }
+      }
+      if (all_lost(P)) continue;
+      if (tests < max_tests && budget.take_fallback()) {
+        ++tests;
+        if (no_genuine_partner(eq, box_of(P.s0, P.s1, P.o0, P.o1), domain, 256, start)) continue;
+      }
       const double ws = CGAL::to_double(P.s1 - P.s0), wo = CGAL::to_double(P.o1 - P.o0);
-      if (budget.fallback_left == 0 || std::max(ws, wo) <= min_side) {
-        failed.push_back({CGAL::to_double(P.s0), CGAL::to_double(P.s1)});
+      if (tests >= max_tests || budget.fallback_left == 0 || std::max(ws, wo) <= 0.25 * shortest_met(P)) {
+        for (std::size_t j = a; j < b; ++j)
+          if (meets(j, P)) lost[j - a] = true;
         continue;
       }
       if (ws >= wo) {
         const Rational m = (P.s0 + P.s1) / 2;
-        todo.push_back({P.s0, m, P.o0, P.o1});
         todo.push_back({m, P.s1, P.o0, P.o1});
+        todo.push_back({P.s0, m, P.o0, P.o1});
       } else {
         const Rational m = (P.o0 + P.o1) / 2;
         todo.push_back({P.s0, P.s1, P.o0, m});
         todo.push_back({P.s0, P.s1, m, P.o1});
       }
     }
-    for (std::size_t j = a; j < b; ++j) {
-      bool ok = true;  // (the failed ranges are the rounded-to-double ends of rational boxes: widened by one ulp)
-      for (const auto& f : failed)
-        if (Double_interval::next(f[0], false) < spans[j].hi && spans[j].lo < Double_interval::next(f[1], true)) ok = false;
-      proved[j] = ok;
-    }
+    for (std::size_t j = a; j < b; ++j) proved[j] = !lost[j - a];
     a = b;
   }
   return proved;
