@@ -461,9 +461,9 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
     auto box_of = [&](const Rational& s0, const Rational& s1, const Rational& o0, const Rational& o1) {
       return axis == 0 ? Parameter_box{s0, s1, o0, o1} : Parameter_box{o0, o1, s0, s1};
     };
-    // about square boxes of side min(width, range)
-    const int along = std::max(1, std::min(64, int(std::ceil(width / std::max(range, 1e-300))))),
-              across = std::max(1, std::min(64, int(std::ceil(range / std::max(width, 1e-300)))));
+    // about square boxes of side min(width, range), at most 16 (the halving refines them)
+    const int along = std::max(1, std::min(16, int(std::ceil(width / std::max(range, 1e-300))))),
+              across = std::max(1, std::min(16, int(std::ceil(range / std::max(width, 1e-300)))));
     struct Piece {
       Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
     };
