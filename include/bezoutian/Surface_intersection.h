@@ -61,7 +61,7 @@ struct Surface_intersection_options {
   std::size_t lifting_exclusion_budget = 5000;
   /// Self-intersection: search the pinch points of the patch in the box (internal/pinch_points.h), with at most
   /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
-  std::size_t pinch_point_boxes = 60000;
+  std::size_t pinch_point_boxes = 600000;
 };
 
 /// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.

@@ -211,7 +211,7 @@ class Pinch_system {
 
 /// Finds every pinch point of `phi` in `box` (see the header comment). `max_boxes` bounds the subdivision.
 inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational>& phi, const Parameter_box& box,
-                                            std::size_t max_boxes = 60000) {
+                                            std::size_t max_boxes = 600000) {
   using D = Double_interval;
   using I = Mpfi_interval;
   const Pinch_system S(phi);
