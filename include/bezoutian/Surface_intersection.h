@@ -459,8 +459,12 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
 // starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
 template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
-                     Lift lift_point) {
+                     Lift lift_point, const Rational_bezier_patch<Rational>* self_patch = nullptr) {
   if (L.topology_method != "subdivision" || !o.certify_lifting) return;
+  // self-intersection: the partner equations divided by the trivial partner, for spans near pinch points
+  std::vector<Blown_up_partner_equations> blown_up;
+  if (self_patch)
+    for (int chart = 0; chart < 2; ++chart) blown_up.emplace_back(*self_patch, chart);
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
@@ -487,7 +491,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     }
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
-                              float_genuine, budget, 6, split_boxes);
+                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided && !split[i]) {
@@ -579,7 +583,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   };
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
-  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point);
+  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
   return L;
 }
 

@@ -360,3 +360,42 @@ TEST_CASE("strip exclusion: never over genuine points of a closed-form double li
   CHECK_FALSE(mixed[0]);
   CHECK(mixed[2]);
 }
+
+// The blown-up partner equations (internal/blown_up_partner_equations.h) are F = E(x; r d(m)) / r with
+// d = (1, m) or (m, 1): checked against the partner equations E themselves (an independent evaluation of the
+// forms at P and Q) at points with r != 0, and their Jacobian against central differences.
+TEST_CASE("blown-up partner equations: E / r and its derivatives", "[surface][lifting]") {
+  using D = internal::Double_interval;
+  std::mt19937 g(11);
+  for (int trial = 0; trial < 4; ++trial) {
+    const Patch phi = random_patch(g, 2 + trial % 2, 2 + trial / 2, trial % 2 == 1);
+    const internal::Partner_equations eq(phi);
+    for (int chart = 0; chart < 2; ++chart) {
+      const internal::Blown_up_partner_equations bu(phi, chart);
+      for (int s = 0; s < 8; ++s) {
+        const double x1 = 0.1 + 0.1 * s, x2 = 0.8 - 0.07 * s, r = 0.03 * (s - 4) + 0.011, m = 0.4 - 0.1 * s;
+        const double l = chart == 0 ? r : r * m, k = chart == 0 ? r * m : r;
+        std::array<D, 3> E, F, Fp, Fm;
+        std::array<std::array<D, 4>, 3> J;
+        eq.evaluate(std::array<D, 4>{D{x1, x1}, D{x2, x2}, D{l, l}, D{k, k}}, E);
+        const std::array<D, 4> z{D{x1, x1}, D{x2, x2}, D{r, r}, D{m, m}};
+        bu.evaluate(z, F, &J);
+        for (int c = 0; c < 3; ++c) {
+          INFO("trial " << trial << " chart " << chart << " sample " << s << " equation " << c);
+          CHECK(F[c].mid() == Approx(E[c].mid() / r).epsilon(1e-9).margin(1e-9));
+          CHECK(F[c].hi - F[c].lo < 1e-9 * (1 + std::fabs(F[c].mid())));
+        }
+        for (int d = 0; d < 4; ++d) {
+          const double h = 1e-6;
+          auto zp = z, zm = z;
+          zp[d] = D{z[d].lo + h, z[d].lo + h};
+          zm[d] = D{z[d].lo - h, z[d].lo - h};
+          bu.evaluate(zp, Fp);
+          bu.evaluate(zm, Fm);
+          for (int c = 0; c < 3; ++c)
+            CHECK(J[c][d].mid() == Approx((Fp[c].mid() - Fm[c].mid()) / (2 * h)).epsilon(1e-5).margin(1e-5));
+        }
+      }
+    }
+  }
+}

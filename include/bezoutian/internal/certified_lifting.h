@@ -21,6 +21,7 @@
 #define BEZOUTIAN_INTERNAL_CERTIFIED_LIFTING_H
 
 #include <bezoutian/Curve_topology.h>
+#include <bezoutian/internal/blown_up_partner_equations.h>
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/internal/partner_domain_crossings.h>
 #include <bezoutian/number_types.h>
@@ -44,12 +45,22 @@ enum class Partner_status { genuine, phantom, undecided, outside };
 /// counts: the exclusions next to a followed partner proved outside the domain (`left`: one per span at most,
 /// cheap and mostly successful), and the fallback that covers a span's whole strip when no partner could be
 /// followed (`fallback_left`: up to 16 tests per span, often failing). With one shared count the fallback on the
-/// first edges starved the cheap proofs of later ones.
+/// first edges starved the cheap proofs of later ones. A third count bounds the genuine proofs by the blown-up
+/// equations near pinch points (about 0.2 ms each, most of them failing on random rational bicubics).
 struct Exclusion_budget {
   std::size_t left = std::numeric_limits<std::size_t>::max();
   std::size_t fallback_left = std::numeric_limits<std::size_t>::max();
   bool take() { return take(left); }
   bool take_fallback() { return take(fallback_left); }
+  /// Krawczyk tests of the blown-up equations near the trivial partner (blown_up_partner_equations.h); given up
+  /// when the first 2000 all fail.
+  std::size_t blown_up_left = 8000, blown_up_tried = 0, blown_up_proved = 0;
+  bool take_blown_up() {
+    if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
+    if (!take(blown_up_left)) return false;
+    ++blown_up_tried;
+    return true;
+  }
 
  private:
   static bool take(std::size_t& n) {
@@ -75,7 +86,9 @@ inline bool invert_3x3(const double (&A)[3][3], double (&C)[3][3]) {
 
 /// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
 /// (0 or 1); T its span; W = (other coordinate, y1, y2). On success W is replaced by K (a tighter enclosure).
-inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, const Double_interval& T,
+/// (Eq: Partner_equations, or Blown_up_partner_equations with z = (x1, x2, r, m).)
+template <class Eq>
+inline bool parametric_partner_krawczyk(const Eq& eq, int axis, const Double_interval& T,
                                         std::array<Double_interval, 3>& W, std::array<Double_interval, 3>* image = nullptr,
                                         bool strict = false) {
   using D = Double_interval;
@@ -131,7 +144,8 @@ inline bool parametric_partner_krawczyk(const Partner_equations& eq, int axis, c
 /// A box W = V x Y predicted to hold the zeros (v, y) of E(t, .) for t in T (floating point: Newton at the centre
 /// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled).
 /// False if Newton does not converge.
-inline bool predict_partner_box(const Partner_equations& eq, int axis, const Double_interval& T,
+template <class Eq>
+inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T,
                                 std::array<double, 3> w, std::array<Double_interval, 3>& W) {
   using D = Double_interval;
   const int q[3] = {1 - axis, 2, 3};
@@ -170,7 +184,8 @@ inline bool predict_partner_box(const Partner_equations& eq, int axis, const Dou
 /// Krawczyk's test with strict inclusion over the span T, with epsilon-inflation from the box W (updated to the
 /// box that passed, in which the zero curve gamma(t), t in T, is unique); K receives the operator's image, which
 /// encloses gamma(T).
-inline bool prove_zero_curve(const Partner_equations& eq, int axis, const Double_interval& T,
+template <class Eq>
+inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
                              std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K) {
   using D = Double_interval;
   for (int attempt = 0; attempt < 4; ++attempt) {
@@ -257,6 +272,54 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   const Partner_status st = status_from_partner(eq, domain, unbounded, axis, T, K, nullptr, true);
   if (st != Partner_status::outside || defer_exclusion) return st;
   return status_from_partner(eq, domain, unbounded, axis, T, K, start(), false, budget);
+}
+
+/// Genuine status of the arc points over the span T of a graph piece of a self-intersection where the followed
+/// partner is close to the trivial one (near a pinch point), by the blown-up equations F = E / r
+/// (blown_up_partner_equations.h; `bu` in the chart of the partner's larger coordinate). The proof is that of
+/// classify_partner_span with F for E: Krawczyk over T (strict) gives a unique continuous zero curve
+/// (v, r, m)(t) in W; the anchor at the middle of T puts it strictly inside the cell; a box for r that excludes 0
+/// makes y = r d(m) a nontrivial partner (E = r F = 0, weights nonzero), so the zero is the arc point over t with a
+/// partner; genuine if P and Q lie in the domain over the whole enclosure. `y0`, `y1`: the floating-point partners
+/// at the span's ends, `v0`, `v1` the other coordinate there. Returns genuine (with the partner enclosure and
+/// K = (other coordinate, partner) in `partner`, `enclosure`, and the box (other coordinate, r, m) in
+/// `blown_up_box`) or undecided; never phantom.
+inline Partner_status classify_span_near_trivial_partner(const Blown_up_partner_equations& bu,
+                                                         const Parameter_box& domain, int axis,
+                                                         const Double_interval& T, const Double_interval& V,
+                                                         const std::array<double, 2>& y0, const std::array<double, 2>& y1,
+                                                         const Parameter_box& cell, std::array<Double_interval, 2>* partner,
+                                                         std::array<Double_interval, 3>* enclosure,
+                                                         std::array<Double_interval, 3>* blown_up_box = nullptr) {
+  using D = Double_interval;
+  const int big = bu.chart() == 0 ? 0 : 1;  // r is the partner's coordinate big, m = the other / r
+  if (y0[big] == 0 || y1[big] == 0 || (y0[big] > 0) != (y1[big] > 0)) return Partner_status::undecided;
+  const double r0 = y0[big], r1 = y1[big], m0 = y0[1 - big] / r0, m1 = y1[1 - big] / r1;
+  const double rr = 0.5 * std::fabs(r1 - r0) + 0.25 * std::fabs(r0 + r1) * 0.1, mr = 0.5 * std::fabs(m1 - m0) + 0.05;
+  std::array<D, 3> W{V, D{std::min(r0, r1) - rr, std::max(r0, r1) + rr}, D{std::min(m0, m1) - mr, std::max(m0, m1) + mr}}, P, K;
+  if (predict_partner_box(bu, axis, T, {W[0].mid(), 0.5 * (r0 + r1), 0.5 * (m0 + m1)}, P)) W = P;
+  if (!prove_zero_curve(bu, axis, T, W, K)) return Partner_status::undecided;
+  {  // the anchor
+    std::array<D, 3> at = W;
+    const D t{T.mid(), T.mid()};
+    if (!parametric_partner_krawczyk(bu, axis, t, at, nullptr, false)) return Partner_status::undecided;
+    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
+    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return Partner_status::undecided;
+  }
+  if (K[1].contains_zero()) return Partner_status::undecided;  // r = 0: possibly the trivial partner
+  const D& X1 = axis == 0 ? T : K[0];
+  const D& X2 = axis == 0 ? K[0] : T;
+  const std::array<D, 4> z{X1, X2, K[1], K[2]};
+  std::array<D, 2> Pp, Qp;
+  bu.points(z, Pp, Qp);
+  if (!(interval_inside(Pp[0], domain.u0, domain.u1) && interval_inside(Pp[1], domain.v0, domain.v1) &&
+        interval_inside(Qp[0], domain.u0, domain.u1) && interval_inside(Qp[1], domain.v0, domain.v1)))
+    return Partner_status::undecided;
+  const std::array<D, 2> y = bu.partner(z);
+  if (partner) *partner = y;
+  if (enclosure) *enclosure = {K[0], y[0], y[1]};
+  if (blown_up_box) *blown_up_box = K;  // (other coordinate, r, m): the zero curve is unique in it over T
+  return Partner_status::genuine;
 }
 
 /// Status of the arc points over a span T that ends at a certified split point (partner_domain_crossings.h) whose
@@ -394,17 +457,24 @@ inline Partner_status classify_span_at_split(const Partner_equations& eq, const 
 /// unique for each t of `span` (a strict parametric Krawczyk test); a Krawczyk test with t fixed, on a
 /// small box around `guess` (other coordinate, y1, y2) inside K, encloses the same zero tightly. Returns `y`
 /// (the span's enclosure) if it fails.
-inline std::array<Double_interval, 2> tight_partner_enclosure(const Partner_equations& eq, int axis,
+template <class Eq>
+inline std::array<Double_interval, 2> tight_partner_enclosure(const Eq& eq, int axis,
                                                               const Double_interval& t, const Double_interval& span,
                                                               const double (&guess)[3],
                                                               const std::array<Double_interval, 3>& K,
                                                               const std::array<Double_interval, 2>& y) {
   using D = Double_interval;
   if (!(span.lo <= t.lo && t.hi <= span.hi)) return y;  // uniqueness in K holds over the span only
+  std::array<double, 3> start{guess[0], guess[1], guess[2]};
+  if (!(std::isfinite(guess[1]) && std::isfinite(guess[2]))) {  // no partner guess: Newton from K's centre
+    std::array<D, 3> P;
+    if (predict_partner_box(eq, axis, t, {std::isfinite(guess[0]) ? guess[0] : K[0].mid(), K[1].mid(), K[2].mid()}, P))
+      for (int c = 0; c < 3; ++c) start[c] = P[c].mid();
+  }
   std::array<D, 3> W;
   bool near = true;
   for (int c = 0; c < 3 && near; ++c) {
-    const double g = std::isfinite(guess[c]) ? guess[c] : K[c].mid();
+    const double g = std::isfinite(start[c]) ? start[c] : K[c].mid();
     const double r = 1e-8 * (1 + std::fabs(g)) + (t.hi - t.lo);
     W[c] = D{std::max(g - r, K[c].lo), std::min(g + r, K[c].hi)};
     near = W[c].lo < W[c].hi;
@@ -559,7 +629,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                                                       const std::vector<bool>& partner_known,
                                                       const std::vector<bool>& float_genuine, Exclusion_budget& budget,
                                                       int max_halvings = 6,
-                                                      const std::vector<const Partner_domain_crossing*>& splits = {}) {
+                                                      const std::vector<const Partner_domain_crossing*>& splits = {},
+                                                      const std::vector<Blown_up_partner_equations>* blown_up = nullptr) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -596,9 +667,20 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
     // coordinate fixed, on a small box around the floating-point values inside K, encloses the same zero tightly;
     // if it fails the span's enclosure is kept.
     auto tight = [&](std::size_t i, Partner_status st, const std::array<D, 2>& y, const std::array<D, 3>& K,
-                     const D& span) {
+                     const D& span, int chart, const std::array<D, 3>& B) {
       if (st != Partner_status::genuine) return y;
       const double nan = std::numeric_limits<double>::quiet_NaN();
+      if (chart >= 0) {  // proved by the blown-up equations: the same test in (other coordinate, r, m), y = r d(m)
+        const int big = chart == 0 ? 0 : 1;
+        const bool k = partner_known[i] && partner[i][big] != 0;
+        const double guess[3] = {e.polyline[i][other], k ? partner[i][big] : nan, k ? partner[i][1 - big] / partner[i][big] : nan};
+        const std::array<D, 2> rm =
+            tight_partner_enclosure((*blown_up)[std::size_t(chart)], axis, coord(i, axis), span, guess, B, {B[1], B[2]});
+        const D rmm = rm[0] * rm[1];
+        const std::array<D, 2> t = chart == 0 ? std::array<D, 2>{rm[0], rmm} : std::array<D, 2>{rmm, rm[0]};
+        return std::array<D, 2>{D{std::max(t[0].lo, y[0].lo), std::min(t[0].hi, y[0].hi)},
+                                D{std::max(t[1].lo, y[1].lo), std::min(t[1].hi, y[1].hi)}};
+      }
       const double guess[3] = {e.polyline[i][other], partner_known[i] ? partner[i][0] : nan,
                                partner_known[i] ? partner[i][1] : nan};
       return tight_partner_enclosure(eq, axis, coord(i, axis), span, guess, K, y);
@@ -673,7 +755,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       std::vector<Span> stack{{T, 0}};
       Partner_status left = Partner_status::undecided, right = Partner_status::undecided;
       std::array<D, 2> left_y = none, right_y = none;
-      std::array<D, 3> left_K{}, right_K{};
+      std::array<D, 3> left_K{}, right_K{}, left_B{}, right_B{};
+      int left_chart = -1, right_chart = -1;  // the blown-up chart that proved the end span, if any
       D left_T{}, right_T{};
       while (!stack.empty()) {
         const Span s = stack.back();
@@ -685,15 +768,30 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         const bool phantom_seen = !float_genuine[i] || !float_genuine[i + 1];
         // a span ending at a certified split point: decided by the side of the line the partner is on
         const Partner_domain_crossing* split = nullptr;
+        int chart_used = -1;
+        std::array<D, 3> B{};
         for (std::size_t j : {i, i + 1})
           if (j < splits.size() && splits[j] && s.T.lo <= splits[j]->box[axis].lo && splits[j]->box[axis].hi <= s.T.hi)
             split = splits[j];
-        const Partner_status st =
+        Partner_status st =
             split && !unbounded
                 ? classify_span_at_split(eq, domain, axis, s.T, Ws, pc.cell, *split,
                                          split->box[axis].mid() < s.T.mid(), &budget, &y, &K)
                 : classify_partner_span(eq, domain, unbounded, axis, s.T, Ws, pc.cell, start, &y, s.depth == 0, &K,
                                         &budget);
+        if (st == Partner_status::undecided && blown_up && blown_up->size() == 2 && !split && !unbounded &&
+            (float_genuine[i] || float_genuine[i + 1]) && (partner_known[i] || partner_known[i + 1])) {
+          // a partner close to the trivial one (near a pinch point): the blown-up equations F = E / r
+          const std::array<double, 2> ya = partner_known[i] ? partner[i] : partner[i + 1],
+                                      yb = partner_known[i + 1] ? partner[i + 1] : partner[i];
+          const double size = std::max(std::fabs(ya[0]) + std::fabs(ya[1]), std::fabs(yb[0]) + std::fabs(yb[1]));
+          if (size < 0.25 && budget.take_blown_up()) {
+            const int chart = std::fabs(ya[0]) + std::fabs(yb[0]) >= std::fabs(ya[1]) + std::fabs(yb[1]) ? 0 : 1;
+            st = classify_span_near_trivial_partner((*blown_up)[std::size_t(chart)], domain, axis, s.T, W[0], ya, yb,
+                                                    pc.cell, &y, &K, &B);
+            if (st == Partner_status::genuine) ++budget.blown_up_proved, chart_used = chart;
+          }
+        }
         if (st == Partner_status::outside) {  // the whole span (depth 0): joins the run, decided at the flush
           run.push_back({i, s.T, K[0]});
           left = right = Partner_status::outside;
@@ -718,15 +816,17 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
             undecided += s.T.hi - s.T.lo;
           }
         }
-        if (s.T.lo <= T.lo) left = st, left_y = y, left_K = K, left_T = s.T;
-        if (s.T.hi >= T.hi) right = st, right_y = y, right_K = K, right_T = s.T;
+        if (s.T.lo <= T.lo) left = st, left_y = y, left_K = K, left_T = s.T, left_chart = chart_used, left_B = B;
+        if (s.T.hi >= T.hi) right = st, right_y = y, right_K = K, right_T = s.T, right_chart = chart_used, right_B = B;
       }
       if (left == Partner_status::outside) continue;  // pending in the run
       flush();
-      merge(i, increasing ? left : right, tight(i, increasing ? left : right, increasing ? left_y : right_y,
-                                                increasing ? left_K : right_K, increasing ? left_T : right_T));
-      merge(i + 1, increasing ? right : left, tight(i + 1, increasing ? right : left, increasing ? right_y : left_y,
-                                                    increasing ? right_K : left_K, increasing ? right_T : left_T));
+      merge(i, increasing ? left : right,
+            tight(i, increasing ? left : right, increasing ? left_y : right_y, increasing ? left_K : right_K,
+                  increasing ? left_T : right_T, increasing ? left_chart : right_chart, increasing ? left_B : right_B));
+      merge(i + 1, increasing ? right : left,
+            tight(i + 1, increasing ? right : left, increasing ? right_y : left_y, increasing ? right_K : left_K,
+                  increasing ? right_T : left_T, increasing ? right_chart : left_chart, increasing ? right_B : left_B));
     }
     flush();
     if (!strips.empty()) {  // spans without a followed partner, near floating-point phantom points
