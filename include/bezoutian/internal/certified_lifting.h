@@ -281,9 +281,9 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
 /// (v, r, m)(t) in W; the anchor at the middle of T puts it strictly inside the cell; a box for r that excludes 0
 /// makes y = r d(m) a nontrivial partner (E = r F = 0, weights nonzero), so the zero is the arc point over t with a
 /// partner; genuine if P and Q lie in the domain over the whole enclosure. `y0`, `y1`: the floating-point partners
-/// at the span's ends, `v0`, `v1` the other coordinate there. Returns genuine (with the partner enclosure and
-/// K = (other coordinate, partner) in `partner`, `enclosure`, and the box (other coordinate, r, m) in
-/// `blown_up_box`) or undecided; never phantom.
+/// at the span's ends (either order), `V` a box for the other coordinate over T. Returns genuine (with the partner
+/// enclosure and K = (other coordinate, partner) in `partner`, `enclosure`, and the box (other coordinate, r, m)
+/// in `blown_up_box`) or undecided; never phantom.
 inline Partner_status classify_span_near_trivial_partner(const Blown_up_partner_equations& bu,
                                                          const Parameter_box& domain, int axis,
                                                          const Double_interval& T, const Double_interval& V,
