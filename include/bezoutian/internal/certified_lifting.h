@@ -204,6 +204,19 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
   return false;
 }
 
+/// The anchor of a zero curve proved unique in W over the span T (prove_zero_curve): Krawczyk's test at the single
+/// value t* = mid T encloses gamma(t*) strictly inside the cell's range of the other coordinate, where the line
+/// through t* meets D = 0 only at the arc point; so gamma(t*) is the arc point (classify_partner_span, step 2).
+template <class Eq>
+inline bool zero_curve_anchored(const Eq& eq, int axis, const Double_interval& T, const std::array<Double_interval, 3>& W,
+                                const Parameter_box& cell) {
+  std::array<Double_interval, 3> at = W;
+  const Double_interval t{T.mid(), T.mid()};
+  if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return false;
+  const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
+  return Rational(at[0].lo) > lo && Rational(at[0].hi) < hi;
+}
+
 /// The status given by a partner enclosure K_y of the arc points over T whose other coordinate lies in K_v
 /// (proved): genuine if P, Q are in the partner domain over all of K; phantom if they are outside and no point of
 /// T x K_v has any partner in the domain; otherwise undecided.
@@ -258,13 +271,7 @@ inline Partner_status classify_partner_span(const Partner_equations& eq, const P
   std::array<D, 3> W = W0, K;
   const bool proved = prove_zero_curve(eq, axis, T, W, K);
   if (!proved) return no_partner;
-  {  // the anchor
-    std::array<D, 3> at = W;
-    const D t{T.mid(), T.mid()};
-    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return no_partner;
-    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return no_partner;
-  }
+  if (!zero_curve_anchored(eq, axis, T, W, cell)) return no_partner;
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
     return no_partner;  // the trivial partner y = 0 is not a partner
   if (partner) *partner = {K[1], K[2]};
@@ -299,13 +306,7 @@ inline Partner_status classify_span_near_trivial_partner(const Blown_up_partner_
   std::array<D, 3> W{V, D{std::min(r0, r1) - rr, std::max(r0, r1) + rr}, D{std::min(m0, m1) - mr, std::max(m0, m1) + mr}}, P, K;
   if (predict_partner_box(bu, axis, T, {W[0].mid(), 0.5 * (r0 + r1), 0.5 * (m0 + m1)}, P)) W = P;
   if (!prove_zero_curve(bu, axis, T, W, K)) return Partner_status::undecided;
-  {  // the anchor
-    std::array<D, 3> at = W;
-    const D t{T.mid(), T.mid()};
-    if (!parametric_partner_krawczyk(bu, axis, t, at, nullptr, false)) return Partner_status::undecided;
-    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return Partner_status::undecided;
-  }
+  if (!zero_curve_anchored(bu, axis, T, W, cell)) return Partner_status::undecided;
   if (K[1].contains_zero()) return Partner_status::undecided;  // r = 0: possibly the trivial partner
   const D& X1 = axis == 0 ? T : K[0];
   const D& X2 = axis == 0 ? K[0] : T;
@@ -349,13 +350,7 @@ inline Partner_status classify_span_at_split(const Partner_equations& eq, const 
   if (!(T.lo <= split.box[axis].lo && split.box[axis].hi <= T.hi)) return no;
   std::array<D, 3> W = W0, K;
   if (!prove_zero_curve(eq, axis, T, W, K)) return no;
-  {  // the anchor (classify_partner_span)
-    std::array<D, 3> at = W;
-    const D t{T.mid(), T.mid()};
-    if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return no;
-    const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-    if (!(Rational(at[0].lo) > lo && Rational(at[0].hi) < hi)) return no;
-  }
+  if (!zero_curve_anchored(eq, axis, T, W, cell)) return no;
   for (int c = 0; c < 3; ++c)
     if (!(W[c].lo <= split.box[q[c]].lo && split.box[q[c]].hi <= W[c].hi)) return no;
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return no;
