@@ -465,6 +465,8 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   std::vector<Blown_up_partner_equations> blown_up;
   if (self_patch)
     for (int chart = 0; chart < 2; ++chart) blown_up.emplace_back(*self_patch, chart);
+  // the kernel of B: phantom proofs where the partner is far outside the domain (kernel_partner_proofs.h)
+  const Kernel_partner_system kernel(L.equation.matrix, L.self_intersection);
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
@@ -491,7 +493,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     }
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
-                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up);
+                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up, &kernel);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided && !split[i]) {

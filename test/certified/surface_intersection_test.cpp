@@ -630,3 +630,78 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
   // a split point of another problem (the patches swapped): no zero in its box, a clear error, not a wrong box
   CHECK_THROWS_AS(refine_split_point(psi, phi, sp, 64), Error);
 }
+
+// The kernel of B (internal/kernel_partner_proofs.h) on a sheared fold, Phi = ((u - 3/10)^2, (v + u/2)^2,
+// (u - 3/10)(v + u/2 - 1/3)). By hand: Phi(u, v) = Phi(u', v') with u' != u forces u' = 3/5 - u and
+// v + u/2 = v' + u'/2 = 1/3, so the projected double curve is the line v = 1/30 + u/2, with the partner
+// (l, k) = (3/5 - 2u) (1, 1/2) (P = (u, 1/3 - u/2), Q = (3/5 - u, v)): genuine for u <= 3/5, phantom beyond (Q
+// leaves through u = 0, and P through v = 0 for u > 2/3). Both l and k are nonzero, so the kernel ratios k = w_lk / w_l, l = w_lk / w_k
+// determine the partner.
+TEST_CASE("kernel of B: phantom proofs on a sheared fold's double line, in closed form", "[surface][lifting]") {
+  using D = internal::Double_interval;
+  const Patch phi = from_power({"(u-3/10)^2", "(v+u/2)^2", "(u-3/10)*(v+u/2-1/3)"}, 2, 2);
+  const Implicit_equation e = self_intersection_equation(phi);
+  // the line lies on D = 0 exactly (an independent check of the derivation above)
+  for (const Q u : {Q(1, 7), Q(2, 3), Q(9, 10)}) {
+    const Q v = Q(1, 30) + u / 2;
+    Q f(0);
+    for (int j = e.determinant.degree(); j >= 0; --j) {
+      Q c(0);
+      for (int k = e.determinant[j].degree(); k >= 0; --k) c = c * u + Q(e.determinant[j][k]);
+      f = f * v + c;
+    }
+    CHECK(CGAL::is_zero(f));
+  }
+  const internal::Kernel_partner_system ks(e.matrix, true);
+  REQUIRE(ks.usable());
+  const Parameter_box domain{Q(0), Q(1), Q(0), Q(1)};
+  auto proved = [&](double u, const Parameter_box& d) {
+    const double v = 1.0 / 30 + u / 2;  // a cell around the line where it is the only part of D = 0
+    const Parameter_box cell{Q(0), Q(1), Q(v - 0.01), Q(v + 0.01)};
+    return internal::kernel_proves_phantom(ks, d, 0, D{u, u}, v, cell);
+  };
+  for (double u : {0.05, 0.2, 0.35, 0.5, 0.59}) CHECK_FALSE(proved(u, domain));  // genuine: never phantom
+  for (double u : {0.61, 0.65, 0.7, 0.8, 0.9, 0.99}) CHECK(proved(u, domain));
+  // with the partner domain [-1, 1]^2, P and Q stay inside: nothing is phantom
+  const Parameter_box wide{Q(-1), Q(1), Q(-1), Q(1)};
+  for (double u : {0.65, 0.8, 0.99}) CHECK_FALSE(proved(u, wide));
+}
+
+// The kernel proofs on random loci, checked against all partners computed independently (numerical_partners:
+// roots of a Sylvester resultant, polished on the equations): a traced point proved phantom by the kernel has no
+// real partner in the domain (up to a margin for points next to a split).
+TEST_CASE("kernel of B: proved phantom points have no partner in the domain", "[surface][lifting]") {
+  using D = internal::Double_interval;
+  std::mt19937 g(20261123);
+  std::size_t proved = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    const bool self = trial % 2 == 0;
+    const Patch a = random_patch(g, 2, 2, trial >= 2), b = random_patch(g, 2, 2, trial >= 2);
+    Surface_intersection_options o;
+    o.certify_lifting = false;
+    o.pinch_point_boxes = 0;
+    const Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
+    if (L.topology_method != "subdivision") continue;
+    const internal::Kernel_partner_system ks(L.equation.matrix, self);
+    const internal::Partner_equations eq = self ? internal::Partner_equations(a) : internal::Partner_equations(a, b);
+    for (const Curve_topology_edge& edge : L.topology.edges)
+      for (const Curve_topology_piece& pc : edge.pieces) {
+        if (pc.graph_axis < 0) continue;
+        for (std::size_t i = pc.first + 1; i < pc.last; ++i) {
+          const auto& x = edge.polyline[i];
+          const int t = pc.graph_axis;
+          if (!internal::kernel_proves_phantom(ks, o.partner_domain, t, D{x[t], x[t]}, x[1 - t], pc.cell)) continue;
+          ++proved;
+          for (const auto& y : internal::numerical_partners(eq, x)) {
+            if (std::abs(y[0].imag()) + std::abs(y[1].imag()) > 1e-6) continue;
+            const double y1 = y[0].real(), y2 = y[1].real(), m = 1e-6;
+            const bool in = self ? (x[0] + y1 > m && x[0] + y1 < 1 - m && x[1] + y2 > m && x[1] + y2 < 1 - m)
+                                 : (y1 > m && y1 < 1 - m && y2 > m && y2 < 1 - m);
+            INFO("trial " << trial << " point " << x[0] << ", " << x[1] << " partner " << y1 << ", " << y2);
+            CHECK_FALSE(in);
+          }
+        }
+      }
+  }
+  CHECK(proved >= 100);
+}

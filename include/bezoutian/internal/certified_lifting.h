@@ -23,6 +23,7 @@
 #include <bezoutian/Curve_topology.h>
 #include <bezoutian/internal/blown_up_partner_equations.h>
 #include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/internal/kernel_partner_proofs.h>
 #include <bezoutian/internal/partner_domain_crossings.h>
 #include <bezoutian/number_types.h>
 
@@ -625,7 +626,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                                                       const std::vector<bool>& float_genuine, Exclusion_budget& budget,
                                                       int max_halvings = 6,
                                                       const std::vector<const Partner_domain_crossing*>& splits = {},
-                                                      const std::vector<Blown_up_partner_equations>* blown_up = nullptr) {
+                                                      const std::vector<Blown_up_partner_equations>* blown_up = nullptr,
+                                                      const Kernel_partner_system* kernel = nullptr) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -838,6 +840,15 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
           if (p < n && out.point_status[p] == Partner_status::undecided) merge(p, Partner_status::phantom, none);
       }
     }
+    // the floating-point phantom points no span proof reached: each by the kernel of B at its own value of the
+    // graph coordinate (kernel_partner_proofs.h; over whole spans the kernel system rarely contracts)
+    if (kernel && !unbounded)
+      for (std::size_t i = pc.first; i <= pc.last && i < n; ++i) {
+        if (out.point_status[i] != Partner_status::undecided || float_genuine[i]) continue;
+        if (i < splits.size() && splits[i]) continue;  // (a split point's status is its own proof)
+        if (kernel_proves_phantom(*kernel, domain, axis, coord(i, axis), coord(i, other).mid(), pc.cell))
+          merge(i, Partner_status::phantom, none);
+      }
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
   return out;
