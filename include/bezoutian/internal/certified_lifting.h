@@ -840,15 +840,27 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
           if (p < n && out.point_status[p] == Partner_status::undecided) merge(p, Partner_status::phantom, none);
       }
     }
-    // the floating-point phantom points no span proof reached: each by the kernel of B at its own value of the
-    // graph coordinate (kernel_partner_proofs.h; over whole spans the kernel system rarely contracts)
-    if (kernel && !unbounded)
-      for (std::size_t i = pc.first; i <= pc.last && i < n; ++i) {
-        if (out.point_status[i] != Partner_status::undecided || float_genuine[i]) continue;
-        if (i < splits.size() && splits[i]) continue;  // (a split point's status is its own proof)
-        if (kernel_proves_phantom(*kernel, domain, axis, coord(i, axis), coord(i, other).mid(), pc.cell))
-          merge(i, Partner_status::phantom, none);
+    // The points no span proof reached, each at its own value t of the graph coordinate (a span of width 0: the
+    // tests that do not contract over a span often do at one value):
+    //  - floating-point genuine: classify_partner_span on a small box around the floating-point (o, y);
+    //  - floating-point phantom: the kernel of B (kernel_partner_proofs.h).
+    for (std::size_t i = pc.first; i <= pc.last && i < n; ++i) {
+      if (out.point_status[i] != Partner_status::undecided) continue;
+      if (i < splits.size() && splits[i]) continue;  // (a split point's status is its own proof)
+      const D t = coord(i, axis), o = coord(i, other);
+      if (float_genuine[i] && partner_known[i]) {
+        const std::array<D, 3> W{D{o.lo - 1e-9 * (1 + std::fabs(o.lo)), o.hi + 1e-9 * (1 + std::fabs(o.hi))},
+                                 D{partner[i][0] - 1e-9 * (1 + std::fabs(partner[i][0])), partner[i][0] + 1e-9 * (1 + std::fabs(partner[i][0]))},
+                                 D{partner[i][1] - 1e-9 * (1 + std::fabs(partner[i][1])), partner[i][1] + 1e-9 * (1 + std::fabs(partner[i][1]))}};
+        std::array<D, 2> y;
+        const auto no_start = []() -> const std::vector<std::array<D, 2>>* { return nullptr; };
+        if (classify_partner_span(eq, domain, unbounded, axis, t, W, pc.cell, no_start, &y, true) ==
+            Partner_status::genuine)
+          merge(i, Partner_status::genuine, y);
+      } else if (!float_genuine[i] && kernel && !unbounded) {
+        if (kernel_proves_phantom(*kernel, domain, axis, t, o.mid(), pc.cell)) merge(i, Partner_status::phantom, none);
       }
+    }
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
   return out;
