@@ -686,6 +686,26 @@ TEST_CASE("point-wise status proofs: phantom by the kernel of B, genuine by Kraw
     const Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
     if (L.topology_method != "subdivision") continue;  // ((2,2) self: the subdivision does not certify these two)
     const internal::Kernel_partner_system ks(L.equation.matrix, self);
+    {  // M = B^t and its partial derivatives (central differences of the exact entries)
+      const std::size_t n = L.equation.matrix.size();
+      for (const auto& x : {std::array<double, 2>{0.3, 0.7}, std::array<double, 2>{0.9, 0.15}}) {
+        std::vector<D> M, M0, M1;
+        ks.evaluate(0, D{x[0], x[0]}, D{x[1], x[1]}, M);
+        ks.evaluate(1, D{x[0], x[0]}, D{x[1], x[1]}, M0);
+        ks.evaluate(2, D{x[0], x[0]}, D{x[1], x[1]}, M1);
+        const double h = 1e-6;
+        const auto Bp0 = internal::evaluate_matrix(L.equation.matrix, x[0] + h, x[1]), Bm0 = internal::evaluate_matrix(L.equation.matrix, x[0] - h, x[1]);
+        const auto Bp1 = internal::evaluate_matrix(L.equation.matrix, x[0], x[1] + h), Bm1 = internal::evaluate_matrix(L.equation.matrix, x[0], x[1] - h);
+        const auto B = internal::evaluate_matrix(L.equation.matrix, x[0], x[1]);
+        for (std::size_t r = 0; r < n; ++r)
+          for (std::size_t c = 0; c < n; ++c) {
+            const double scale = 1 + std::fabs(double(B[c][r]));
+            CHECK(M[r * n + c].mid() == Approx(double(B[c][r])).margin(1e-9 * scale));
+            CHECK(M0[r * n + c].mid() == Approx(double((Bp0[c][r] - Bm0[c][r]) / (2 * h))).margin(1e-4 * scale));
+            CHECK(M1[r * n + c].mid() == Approx(double((Bp1[c][r] - Bm1[c][r]) / (2 * h))).margin(1e-4 * scale));
+          }
+      }
+    }
     const internal::Partner_equations eq = self ? internal::Partner_equations(a) : internal::Partner_equations(a, b);
     for (std::size_t k = 0; k < L.topology.edges.size(); ++k) {
       const Curve_topology_edge& edge = L.topology.edges[k];

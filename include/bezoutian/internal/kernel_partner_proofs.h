@@ -48,18 +48,20 @@ class Kernel_partner_system {
     for (std::size_t r = 0; r < n_; ++r)
       for (std::size_t c = 0; c < n_; ++c) {
         const Polynomial_2<Rational>& p = B.entries[c][r];  // M[r][c] = B[c][r]
-        std::vector<std::vector<Rational>> q(std::size_t(std::max(p.degree(), 0)) + 1);
+        // the coefficient grid q[j][i] of x0^i x1^j, all rows of one length (so the derivative in x1, which
+        // moves row j + 1 to row j, keeps every coefficient)
+        int width = 0;
+        for (int j = 0; j <= p.degree(); ++j) width = std::max(width, p[j].degree() + 1);
+        std::vector<std::vector<Rational>> q(std::size_t(std::max(p.degree(), 0)) + 1,
+                                             std::vector<Rational>(std::size_t(std::max(width, 1)), Rational(0)));
         for (int j = 0; j <= p.degree(); ++j)
-          for (int i = 0; i <= p[j].degree(); ++i) {
-            if (q[j].size() <= std::size_t(i)) q[j].resize(std::size_t(i) + 1, Rational(0));
-            q[j][i] = p[j][i];
-          }
+          for (int i = 0; i <= p[j].degree(); ++i) q[j][i] = p[j][i];
         // the value and d/dx0, d/dx1 (x0 the inner variable of Polynomial_2)
         std::array<std::vector<std::vector<Rational>>, 3> e{q, q, q};
         for (std::size_t j = 0; j < q.size(); ++j)
           for (std::size_t i = 0; i < q[j].size(); ++i) {
             e[1][j][i] = i + 1 < q[j].size() ? q[j][i + 1] * Rational(int(i + 1)) : Rational(0);
-            e[2][j][i] = j + 1 < q.size() && i < q[j + 1].size() ? q[j + 1][i] * Rational(int(j + 1)) : Rational(0);
+            e[2][j][i] = j + 1 < q.size() ? q[j + 1][i] * Rational(int(j + 1)) : Rational(0);
           }
         for (int d = 0; d < 3; ++d) {
           std::vector<std::vector<D>>& g = grids_[d][r * n_ + c];
