@@ -401,8 +401,10 @@ inline bool kernel_proves_phantom(const Kernel_partner_system& ks, const Paramet
   }
   if (!proved) return false;
   // the zero lies strictly inside the cell's range of the other coordinate: it is the arc point
-  const D range = axis == 0 ? D::hull(cell.v0, cell.v1) : D::hull(cell.u0, cell.u1);
-  if (!(range.lo < K[0].lo && K[0].hi < range.hi)) return false;
+  // (compared exactly: the cell's bounds are rationals, their double hull is wider)
+  const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
+  if (!(std::isfinite(K[0].lo) && std::isfinite(K[0].hi) && Rational(K[0].lo) > lo && Rational(K[0].hi) < hi))
+    return false;
   std::array<D, 2> y;
   if (!ks.partner(sys.kernel(K), y)) return true;  // no vector of monomial form: no partner at all
   const D x0 = axis == 0 ? T : K[0], x1 = axis == 0 ? K[0] : T;
