@@ -849,9 +849,9 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       if (i < splits.size() && splits[i]) continue;  // (a split point's status is its own proof)
       const D t = coord(i, axis), o = coord(i, other);
       if (float_genuine[i] && partner_known[i]) {
-        const std::array<D, 3> W{D{o.lo - 1e-9 * (1 + std::fabs(o.lo)), o.hi + 1e-9 * (1 + std::fabs(o.hi))},
-                                 D{partner[i][0] - 1e-9 * (1 + std::fabs(partner[i][0])), partner[i][0] + 1e-9 * (1 + std::fabs(partner[i][0]))},
-                                 D{partner[i][1] - 1e-9 * (1 + std::fabs(partner[i][1])), partner[i][1] + 1e-9 * (1 + std::fabs(partner[i][1]))}};
+        auto around = [](const D& c) { return D{c.lo - 1e-9 * (1 + std::fabs(c.lo)), c.hi + 1e-9 * (1 + std::fabs(c.hi))}; };
+        const std::array<D, 3> W{around(o), around(D{partner[i][0], partner[i][0]}),
+                                 around(D{partner[i][1], partner[i][1]})};
         std::array<D, 2> y;
         const auto no_start = []() -> const std::vector<std::array<D, 2>>* { return nullptr; };
         if (classify_partner_span(eq, domain, unbounded, axis, t, W, pc.cell, no_start, &y, true) ==

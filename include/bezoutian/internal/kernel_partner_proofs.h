@@ -28,6 +28,7 @@
 
 #include <bezoutian/Surface_bezoutian_matrices.h>
 #include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/internal/floating_null_vector.h>
 
 #include <algorithm>
 #include <array>
@@ -194,35 +195,15 @@ class Kernel_span_system {
   bool predict(const D& T, double o, std::vector<D>& Z) {
     const double t = T.mid();
     std::vector<double> M, Mo, Mt;
-    // a null vector of M(t, o): Gaussian elimination with complete pivoting, the last column left free
+    // a null vector of M(t, o) (floating_null_vector.h)
     values(t, o, M, Mo);
-    std::vector<double> w(n_, 0);
+    std::vector<double> w(n_);
     {
-      std::vector<double>& A = M;
-      std::vector<std::size_t> col(n_);
-      for (std::size_t k = 0; k < n_; ++k) col[k] = k;
-      for (std::size_t k = 0; k + 1 < n_; ++k) {
-        std::size_t pr = k, pc = k;
-        for (std::size_t i = k; i < n_; ++i)
-          for (std::size_t j = k; j < n_; ++j)
-            if (std::fabs(A[i * n_ + j]) > std::fabs(A[pr * n_ + pc])) pr = i, pc = j;
-        if (!(std::fabs(A[pr * n_ + pc]) > 0) || !std::isfinite(A[pr * n_ + pc])) return false;
-        for (std::size_t j = 0; j < n_; ++j) std::swap(A[k * n_ + j], A[pr * n_ + j]);
-        for (std::size_t i = 0; i < n_; ++i) std::swap(A[i * n_ + k], A[i * n_ + pc]);
-        std::swap(col[k], col[pc]);
-        for (std::size_t i = k + 1; i < n_; ++i) {
-          const double f = A[i * n_ + k] / A[k * n_ + k];
-          for (std::size_t j = k; j < n_; ++j) A[i * n_ + j] -= f * A[k * n_ + j];
-        }
-      }
-      std::vector<double> x(n_, 0);
-      x[n_ - 1] = 1;
-      for (std::size_t k = n_ - 1; k-- > 0;) {
-        double s = 0;
-        for (std::size_t j = k + 1; j < n_; ++j) s -= A[k * n_ + j] * x[j];
-        x[k] = s / A[k * n_ + k];
-      }
-      for (std::size_t k = 0; k < n_; ++k) w[col[k]] = x[k];
+      std::vector<std::vector<long double>> A(n_, std::vector<long double>(n_));
+      for (std::size_t r = 0; r < n_; ++r)
+        for (std::size_t c = 0; c < n_; ++c) A[r][c] = M[r * n_ + c];
+      const std::vector<long double> x = null_vector(A);
+      for (std::size_t k = 0; k < n_; ++k) w[k] = double(x[k]);
     }
     // normalize at the largest entry
     f_ = 0;
