@@ -375,9 +375,9 @@ inline bool kernel_proves_phantom(const Kernel_partner_system& ks, const Paramet
     }
 
     if (K.size() != Z.size() || !(std::isfinite(K[0].lo) && std::isfinite(K[0].hi))) return false;
-    for (std::size_t c = 0; c < Z.size(); ++c) {  // epsilon-inflation
-      const double lo = std::min(Z[c].lo, K[c].lo), hi = std::max(Z[c].hi, K[c].hi), r = 0.5 * (hi - lo) + 1e-15;
-      Z[c] = D{lo - r, hi + r};
+    for (std::size_t c = 0; c < Z.size(); ++c) {  // epsilon-inflation of the image (contracting entries shrink)
+      const double r = 0.25 * (K[c].hi - K[c].lo) + 1e-15 * (1 + std::fabs(K[c].lo));
+      Z[c] = D{K[c].lo - r, K[c].hi + r};
     }
   }
   if (!proved) return false;
