@@ -264,6 +264,7 @@ class Subdivision_topology {
                         (multiple_[m].refuted ? " (its Taylor coefficients of lower order are not all zero)" : "");
         return res;
       }
+      if (split_around_multiple(B, stack)) continue;
       split(B, stack);
     }
     if (!assemble(res.topology)) {
@@ -466,6 +467,7 @@ class Subdivision_topology {
   // Double grid of an MPFI grid: midpoints rounded to nearest, scaled by one power of two, and the largest
   // distance from a midpoint to its interval's ends rounded upwards.
   std::shared_ptr<const Double_bernstein_grid> double_grid_of(const Interval_grid& g) const {
+    const int a_ = g.a(), b_ = g.b();  // D's grid, or one of its derivatives' (no_critical_point_outside)
     auto f = std::make_shared<Double_bernstein_grid>(a_, b_);
     mpfr_t mid, d;
     mpfr_init2(mid, prec_);
@@ -1327,15 +1329,20 @@ class Subdivision_topology {
       mp.refuted = !mp.blowup->consistent();
       if (mp.refuted) return false;
     }
-    // the largest power of two r <= half the distance from K to the edges of B for which the cone is proved
-    const Rational dist = std::min(std::min(K.u0 - B.u0, B.u1 - K.u1), std::min(K.v0 - B.v0, B.v1 - K.v1));
+    // first a square around p that covers B (then (2') has nothing left to prove), else the largest power of two
+    // r <= half the distance from K to the edges of B for which the cone is proved
+    const Rational reach = std::max(std::max(K.u1 - B.u0, B.u1 - K.u0), std::max(K.v1 - B.v0, B.v1 - K.v0));
     Rational r(1);
-    while (r > dist / 2) r /= 2;
-    while (r * 2 <= dist / 2) r *= 2;
-    int lines = -1;
-    for (int attempt = 0; attempt < 3 && lines < 0; ++attempt) {
-      lines = mp.blowup->tangent_lines(r);
-      if (lines < 0) r /= 8;
+    while (r < reach) r *= 2;
+    while (r / 2 >= reach) r /= 2;
+    int lines = mp.blowup->tangent_lines(r);
+    if (lines < 0) {
+      const Rational dist = std::min(std::min(K.u0 - B.u0, B.u1 - K.u1), std::min(K.v0 - B.v0, B.v1 - K.v1));
+      while (r > dist / 2) r /= 2;
+      for (int attempt = 0; attempt < 3 && lines < 0; ++attempt) {
+        lines = mp.blowup->tangent_lines(r);
+        if (lines < 0) r /= 8;
+      }
     }
     if (lines < 0) return false;
     std::vector<Crossing> cr;
@@ -1351,11 +1358,45 @@ class Subdivision_topology {
     return true;
   }
 
-  // grad D != 0 on B outside the box S: sub-boxes (double grids, proved radius) where D_u or D_v keeps a sign,
-  // or that lie inside S.
+  // A box B holding a known multiple point p (enclosure K strictly inside) that resolve_multiple could not
+  // resolve is cut into 3 x 3 boxes: a square [c - h, c + h]^2 around p (c a short rational within h/8 of K, h a
+  // power of two at most half the distance from K to B's edges) and the eight boxes around it, all at a distance
+  // >= 7h/8 from p. A plain split leaves p next to an edge as often as not, and the boxes beside p are then never
+  // resolved: D = 0 near a multiple point looks the same at every scale (its tangent cone), so a box whose
+  // distance to p is not large against its size fails the monotonicity tests at every depth. Here only the
+  // square touches p, and it is resolve_multiple's case, with p central; the boxes around it are at a fixed
+  // distance from p, and their sub-boxes become simple. False if B holds no such point.
+  bool split_around_multiple(Box& B, std::vector<Box>& stack) {
+    const int m = multiple_point_in(B);
+    if (m < 0 || multiple_[std::size_t(m)].refuted) return false;
+    const Parameter_box& K = multiple_[std::size_t(m)].known.enclosure;
+    const Rational dist = std::min(std::min(K.u0 - B.u0, B.u1 - K.u1), std::min(K.v0 - B.v0, B.v1 - K.v1));
+    Rational h(1);
+    while (h > dist / 2) h /= 2;
+    while (h * 2 <= dist / 2) h *= 2;
+    Rational cu, cv;
+    if (!simplest_rational(K.u0 - h / 8, K.u1 + h / 8, cu) || !simplest_rational(K.v0 - h / 8, K.v1 + h / 8, cv))
+      return false;
+    const Rational us[4] = {B.u0, cu - h, cu + h, B.u1}, vs[4] = {B.v0, cv - h, cv + h, B.v1};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Box C{us[i], us[i + 1], vs[j], vs[j + 1], B.depth + 1, nullptr, nullptr};
+        C.fast = double_grid_of(mpfi_grid(C));
+        stack.push_back(C);
+      }
+    return true;
+  }
+
+  // grad D != 0 on B outside the box S: sub-boxes where D_u or D_v keeps a sign, or that lie inside S. The signs
+  // come from the Bernstein grids of D_u and D_v themselves (forward differences of B's MPFI grid, exact up to
+  // its rounding), split in double with the proved radius. Differences of a split grid of D would not do: on a
+  // piece of relative size h they are h times smaller than the derivative while their error is not, and near a
+  // multiple point with two almost equal tangents the gradient is small along a whole sector, where the pieces
+  // must be small (two random (2,2) self-intersections failed there at every depth).
   bool no_critical_point_outside(Box& B, const Parameter_box& S) {
+    using Grid = std::shared_ptr<const Double_bernstein_grid>;
     struct Piece {
-      std::shared_ptr<const Double_bernstein_grid> g;
+      Grid gu, gv;            // Bernstein grids of D_u and D_v on the piece (null when that degree is 0)
       double x0, x1, y0, y1;  // local coordinates in B (dyadic: exact)
       int depth;
     };
@@ -1363,27 +1404,42 @@ class Subdivision_topology {
     const Rational sx0 = (S.u0 - B.u0) / wu, sx1 = (S.u1 - B.u0) / wu, sy0 = (S.v0 - B.v0) / wv,
                    sy1 = (S.v1 - B.v0) / wv;
     const double aspect = CGAL::to_double(wu) / CGAL::to_double(wv);
-    std::vector<Piece> stack{{double_grid_of(mpfi_grid(B)), 0, 1, 0, 1, 0}};
+    const Interval_grid& g = mpfi_grid(B);
+    auto derivative = [&](bool along_u) -> Grid {
+      if ((along_u ? a_ : b_) < 1) return nullptr;
+      Interval_grid d(along_u ? a_ - 1 : a_, along_u ? b_ : b_ - 1, prec_);
+      for (int i = 0; i <= d.a(); ++i)
+        for (int j = 0; j <= d.b(); ++j) mpfi_sub(d.at(i, j), along_u ? g.at(i + 1, j) : g.at(i, j + 1), g.at(i, j));
+      return double_grid_of(d);
+    };
+    auto keeps_sign = [](const Grid& G) { return G && G->common_sign(G->radius()) != 0; };
+    auto halve = [](const Grid& G, bool along_u, Grid& lo, Grid& hi) {
+      if (!G) return;
+      auto l = std::make_shared<Double_bernstein_grid>(), h = std::make_shared<Double_bernstein_grid>();
+      G->split(along_u, 0.5, *l, *h);
+      lo = l;
+      hi = h;
+    };
+    std::vector<Piece> stack{{derivative(true), derivative(false), 0, 1, 0, 1, 0}};
     for (int count = 0; !stack.empty(); ++count) {
       const Piece P = stack.back();
       stack.pop_back();
       if (Rational(P.x0) >= sx0 && Rational(P.x1) <= sx1 && Rational(P.y0) >= sy0 && Rational(P.y1) <= sy1) continue;
-      const double rho = P.g->radius();
-      if ((a_ >= 1 && P.g->difference_sign(true, rho) != 0) || (b_ >= 1 && P.g->difference_sign(false, rho) != 0))
-        continue;
-      if (P.depth >= 16 || count > 4000) return false;
+      if (keeps_sign(P.gu) || keeps_sign(P.gv)) continue;
+      if (P.depth >= 28 || count > 20000) return false;
       const bool along_u = (P.x1 - P.x0) * aspect >= (P.y1 - P.y0);
-      auto left = std::make_shared<Double_bernstein_grid>(a_, b_), right = std::make_shared<Double_bernstein_grid>(a_, b_);
-      P.g->split(along_u, 0.5, *left, *right);
-      work_ += double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
-      const double xm = 0.5 * (P.x0 + P.x1), ym = 0.5 * (P.y0 + P.y1);
-      if (along_u) {
-        stack.push_back({left, P.x0, xm, P.y0, P.y1, P.depth + 1});
-        stack.push_back({right, xm, P.x1, P.y0, P.y1, P.depth + 1});
-      } else {
-        stack.push_back({left, P.x0, P.x1, P.y0, ym, P.depth + 1});
-        stack.push_back({right, P.x0, P.x1, ym, P.y1, P.depth + 1});
-      }
+      Piece L = P, R = P;
+      ++L.depth;
+      ++R.depth;
+      halve(P.gu, along_u, L.gu, R.gu);
+      halve(P.gv, along_u, L.gv, R.gv);
+      work_ += 2 * double(a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+      if (along_u)
+        L.x1 = R.x0 = 0.5 * (P.x0 + P.x1);
+      else
+        L.y1 = R.y0 = 0.5 * (P.y0 + P.y1);
+      stack.push_back(L);
+      stack.push_back(R);
     }
     return true;
   }

@@ -444,6 +444,68 @@ TEST_CASE("subdivision: known triple points at irrational points are resolved by
   CHECK_THROWS_AS(subdivide_curve_in_box(three, Parameter_box{}, o), Invalid_input);
 }
 
+TEST_CASE("subdivision: known multiple points on a split line, or with two nearly equal tangents, are resolved",
+          "[topology][subdivision]") {
+  // three lines through (15/31, 16/33), the point where the root box is first split: a plain split puts it on the
+  // children's edges, and then no box holds it strictly inside. The box is cut 3 x 3 around it instead.
+  const P2 X = 31 * u - 15, Y = 33 * v - 16;
+  const P2 L3 = (Y - 3 * X) * (Y - X) * (Y + 2 * X);
+  Subdivision_topology_options o;
+  CHECK_FALSE(subdivide_curve_in_box(L3, Parameter_box{}, o).certified);  // not found alone: on the split lines
+  o.multiple_points = {Known_multiple_point{box(Q(15, 31), Q(15, 31), Q(16, 33), Q(16, 33)), 3}};
+  auto r = subdivide_curve_in_box(L3, Parameter_box{}, o);
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.number_of_singular_points() == 1);
+  for (const auto& x : r.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.half_branches == 6);
+      CHECK(x.u == Approx(15.0 / 31).margin(1e-15));
+      CHECK(x.v == Approx(16.0 / 33).margin(1e-15));
+    }
+  CHECK(r.topology.edges.size() == 6);
+  CHECK(boundary_vertices(r.topology) == 6);
+  CHECK(r.topology.components.size() == 1);
+  check_samples(L3, r.topology, 1e-9);
+  // the triple point (1/2 + 2^-30, 1/2) of the test above, given by the caller
+  const Integer K = Integer(1) << 30;
+  const P2 near_half = (K * u - K * v - 1) * (K * u + K * v - K - 1) * (2 * K * u - K - 2);
+  o.multiple_points = {Known_multiple_point{box(Q(K + 2, 2 * K), Q(K + 2, 2 * K), Q(1, 2), Q(1, 2)), 3}};
+  r = subdivide_curve_in_box(near_half, Parameter_box{}, o);
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.topology.number_of_singular_points() == 1);
+  CHECK(r.topology.edges.size() == 6);
+  CHECK(r.topology.components.size() == 1);
+
+  // x (y - 6x)(y - 6.3x) with x = 2u^2 - 1, y = 2v - 1: a triple point at (1/sqrt2, 1/2) whose tangents y = 6x and
+  // y = 6.3x are about 0.006 rad apart in (u, v). grad D is small in the whole sector between them (|grad| ~ angle^2 there), so
+  // the gradient tests need tiny pieces along it: they now split the Bernstein grids of D_u and D_v (differences
+  // of a split grid of D lose the precision the piece needs), and the blow-up square may cover the whole box.
+  // The line u = 1/sqrt2 and the parabolas 2v - 1 = 6 (2u^2 - 1), 2v - 1 = 6.3 (2u^2 - 1) each run from v = 0 to
+  // v = 1 through the triple point: 6 arcs, 6 boundary points, one component.
+  const P2 x = 2 * u * u - 1, y = 2 * v - 1;
+  const auto b = inverse_sqrt2_bracket();
+  o.multiple_points = {Known_multiple_point{box(b.first, b.second, Q(1, 2), Q(1, 2)), 3}};
+  for (int gap : {100, 30}) {
+    const P2 N = x * (100 * y - 600 * x) * (100 * y - (600 + gap) * x);
+    r = subdivide_curve_in_box(N, Parameter_box{}, o);
+    INFO("gap " << gap << ": " << r.reason);
+    REQUIRE(r.certified);
+    REQUIRE(r.topology.number_of_singular_points() == 1);
+    for (const auto& vx : r.topology.vertices)
+      if (vx.kind == Curve_topology_vertex::singular) {
+        CHECK(vx.half_branches == 6);
+        CHECK(vx.u_lo <= 0.70710678118654752);
+        CHECK(0.70710678118654752 <= vx.u_hi);
+      }
+    CHECK(boundary_vertices(r.topology) == 6);
+    CHECK(r.topology.edges.size() == 6);
+    CHECK(r.topology.components.size() == 1);
+    check_samples(N, r.topology, 1e-9);
+  }
+}
+
 TEST_CASE("subdivision: singular points on the box's boundary are reported as not certified, naming the box",
           "[topology][subdivision]") {
   // A node at the corner (0, 0), with one branch entering the box (u = v) and one touching it only there
