@@ -261,8 +261,9 @@ TEST_CASE("partner equations restricted to a box enclose the exact values and de
 // interval_horner (the hot loop of the exclusions) rounds to nearest and widens once at the end by an a-priori
 // bound (Lazy_horner). Checked against exact rational evaluation: at point arguments where massive cancellation
 // makes the exact value 0 ((x - a)^n expanded, a a double), and at the ends and inside of random intervals with
-// coefficients of mixed signs and magnitudes 2^-40 .. 2^40; the enclosures must also be narrow (a test that
-// cannot fail would accept infinite ones).
+// coefficients of mixed signs and magnitudes 2^-40 .. 2^40, nonnegative arguments (parameters in a domain) and,
+// since session 18, arguments of any sign (partner boxes reach below 0); the enclosures must also be narrow (a
+// test that cannot fail would accept infinite ones).
 TEST_CASE("interval Horner with one rounding bound encloses exact values", "[surface][witness]") {
   using D = internal::Double_interval;
   std::mt19937 g(7);
@@ -277,11 +278,13 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
     for (const Q& q : c) r.push_back(D::of(q));
     return r;
   };
-  int narrow = 0;
-  for (int n = 1; n <= 12; ++n) {  // (x - a)^n at x = a: the exact value 0 after cancellation
-    const double a = 0.1 * n + 0.3;  // a double: the argument is a point interval
+  int narrow[2] = {0, 0};  // point arguments with rounding-only widths: nonnegative, signed
+  for (int n = -12; n <= 12; ++n) {  // (x - a)^n at x = a: the exact value 0 after cancellation
+    if (n == 0) continue;
+    const double a = n > 0 ? 0.1 * n + 0.3 : 0.1 * n - 0.3;  // a double: the argument is a point interval
+    const int degree = std::abs(n);
     std::vector<Q> c{Q(1)};
-    for (int k = 0; k < n; ++k) {  // multiply by (x - a)
+    for (int k = 0; k < degree; ++k) {  // multiply by (x - a)
       std::vector<Q> d(c.size() + 1, Q(0));
       for (std::size_t i = 0; i < c.size(); ++i) {
         d[i + 1] += c[i];
@@ -292,15 +295,17 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
     const D r = internal::interval_horner(enclose(c), D{a, a});
     CHECK(r.lo <= 0);
     CHECK(0 <= r.hi);
-    CHECK(r.hi - r.lo < 1e-14 * n * std::pow(2 * a, n));  // n roundings of the magnitude sum |c_i| a^i = (2a)^n
-    // bivariate: rows (x - a)^n y^j with y = [0.5, 0.75]
+    // n roundings of the magnitude sum |c_i| |a|^i = (2|a|)^n
+    CHECK(r.hi - r.lo < 1e-14 * degree * std::pow(2 * std::fabs(a), degree));
+    // bivariate: rows (x - a)^n y^j with y = [0.5, 0.75] (or [-0.75, 0.5])
     std::vector<std::vector<D>> c2(3, enclose(c));
-    const D r2 = internal::interval_horner(c2, D{a, a}, D{0.5, 0.75});
+    const D r2 = internal::interval_horner(c2, D{a, a}, n > 0 ? D{0.5, 0.75} : D{-0.75, 0.5});
     CHECK(r2.lo <= 0);
     CHECK(0 <= r2.hi);
   }
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 600; ++trial) {
     const int n = 1 + trial % 9, rows = 1 + trial % 4;
+    const bool signed_arguments = trial >= 300;  // x in [-1, 1], y in [-1/2, 9/16]
     std::vector<std::vector<Q>> c(rows, std::vector<Q>(n + 1));
     for (auto& row : c)
       for (Q& q : row) {
@@ -309,7 +314,8 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
       }
     int p = pick(g), q = pick(g);
     if (p > q) std::swap(p, q);
-    const Q x0(p, 32), x1(q, 32), y0(pick(g), 64), y1 = y0 + Q(1, 16);  // nonnegative arguments (the fast path)
+    const Q shift = signed_arguments ? Q(1) : Q(0), shift_y = signed_arguments ? Q(1, 2) : Q(0);
+    const Q x0 = Q(p, 32) - shift, x1 = Q(q, 32) - shift, y0 = Q(pick(g), 64) - shift_y, y1 = y0 + Q(1, 16);
     const D X = D::hull(x0, x1), Y = D::hull(y0, y1);
     std::vector<std::vector<D>> ci;
     for (const auto& row : c) ci.push_back(enclose(row));
@@ -328,10 +334,11 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
     if (p == q) {  // a point argument: the width is rounding only
       double mag = 0;
       for (const Q& q : c[0]) mag = std::max(mag, std::fabs(CGAL::to_double(q)));
-      narrow += r1.hi - r1.lo <= 1e-12 * mag * (n + 1) * 4;
+      narrow[signed_arguments] += r1.hi - r1.lo <= 1e-12 * mag * (n + 1) * 4;
     }
   }
-  CHECK(narrow >= 1);
+  CHECK(narrow[0] >= 1);
+  CHECK(narrow[1] >= 1);
 }
 
 // The strip exclusion (internal/certified_lifting.h, exclude_strips: the phantom proof of spans whose partner
