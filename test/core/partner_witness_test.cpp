@@ -258,6 +258,43 @@ TEST_CASE("partner equations restricted to a box enclose the exact values and de
   }
 }
 
+// Double_interval's outward rounding (widen: each end moved by |end| 2^-52 + 2^-1074 after rounding to nearest)
+// against exact rational results, on random operands of magnitudes 2^-1060 .. 2^1000 (subnormal results
+// included), and on overflow: an end that overflows must not produce a finite or empty enclosure.
+TEST_CASE("outward-rounded double intervals enclose exact sums, differences and products", "[surface][witness]") {
+  using D = internal::Double_interval;
+  std::mt19937_64 g(18);
+  std::uniform_real_distribution<double> mant(-2, 2);
+  std::uniform_int_distribution<int> ex(-1060, 1000);
+  std::size_t tight = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double a = std::ldexp(mant(g), ex(g) / (trial % 2 ? 1 : 40)), b = std::ldexp(mant(g), ex(g) / (trial % 3 ? 1 : 40));
+    const D x{a, a}, y{b, b};
+    const Q qa(a), qb(b);
+    const D r[3] = {x + y, x - y, x * y};
+    const Q e[3] = {qa + qb, qa - qb, qa * qb};
+    for (int k = 0; k < 3; ++k) {
+      INFO("a = " << a << " b = " << b << " op " << k);
+      REQUIRE(r[k].lo <= r[k].hi);
+      if (!std::isfinite(r[k].lo) || !std::isfinite(r[k].hi)) continue;  // overflow: checked below
+      CHECK(Q(r[k].lo) <= e[k]);
+      CHECK(e[k] <= Q(r[k].hi));
+      tight += r[k].hi - r[k].lo <= std::fabs(r[k].mid()) * 0x1p-49 + 0x1p-1071;  // a few ulps
+    }
+  }
+  CHECK(tight > 50000);
+  // overflow: DBL_MAX + DBL_MAX rounds to +inf; the exact 2 DBL_MAX is finite, so the lower end must not be +inf
+  // (moving +inf "down by one ulp" leaves it at +inf: the enclosure would be empty of the exact value), and
+  // likewise -DBL_MAX * DBL_MAX must not get the upper end -inf
+  const double M = std::numeric_limits<double>::max();
+  const D o = D{M, M} + D{M, M};
+  CHECK(o.hi == HUGE_VAL);
+  CHECK(o.lo < HUGE_VAL);
+  const D n = D{-M, -M} * D{M, M};
+  CHECK(n.lo == -HUGE_VAL);
+  CHECK(n.hi > -HUGE_VAL);
+}
+
 // interval_horner (the hot loop of the exclusions) rounds to nearest and widens once at the end by an a-priori
 // bound (Lazy_horner). Checked against exact rational evaluation: at point arguments where massive cancellation
 // makes the exact value 0 ((x - a)^n expanded, a a double), and at the ends and inside of random intervals with
