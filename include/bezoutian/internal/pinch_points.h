@@ -224,8 +224,22 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
     std::array<I, 3> X;       // a contracted enclosure of the solution
   };
   std::vector<Found> found;
-  // every box proved to hold exactly one solution (each a found one): a cell inside one holds no other
-  std::vector<std::pair<int, std::array<I, 3>>> regions;
+  // every box proved to hold exactly one solution (each a found one): a cell inside one holds no other. Kept as
+  // double boxes rounded inwards (a cell inside the double box is inside the proved one): the test runs for
+  // every cell against every region, and exact comparisons made it most of the search's time.
+  struct Region {
+    int chart;
+    std::array<double, 3> lo, hi;
+  };
+  std::vector<Region> regions;
+  auto add_region = [&](int chart, const std::array<I, 3>& U) {
+    Region r{chart, {}, {}};
+    for (int c = 0; c < 3; ++c) {
+      r.lo[c] = CGAL::to_interval(U[c].lower()).second;  // >= the exact lower end
+      r.hi[c] = CGAL::to_interval(U[c].upper()).first;   // <= the exact upper end
+    }
+    regions.push_back(r);
+  };
   auto inside = [](const I& a, const I& b) { return b.lower() <= a.lower() && a.upper() <= b.upper(); };
   // is the solution of f the one of g? f's enclosure, mapped to g's chart, lies in g's box of uniqueness
   auto same = [&](const Found& f, const Found& g) {
@@ -255,14 +269,15 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
       }
       const auto& x = cell.x;
       if (S.excluded(chart, x)) continue;
-      bool covered = false;  // inside a box already proved to hold exactly one (found) solution of this chart
-      auto contains = [&](const std::array<I, 3>& U) {
-        for (int c = 0; c < 3; ++c)
-          if (!(U[c].lower() <= Rational(x[c].lo) && Rational(x[c].hi) <= U[c].upper())) return false;
-        return true;
+      // inside a box already proved to hold exactly one (found) solution of this chart?
+      auto covered = [&]() {
+        for (const Region& r : regions)
+          if (r.chart == chart && r.lo[0] <= x[0].lo && x[0].hi <= r.hi[0] && r.lo[1] <= x[1].lo &&
+              x[1].hi <= r.hi[1] && r.lo[2] <= x[2].lo && x[2].hi <= r.hi[2])
+            return true;
+        return false;
       };
-      for (const auto& reg : regions) covered = covered || (reg.first == chart && contains(reg.second));
-      if (covered) continue;
+      if (covered()) continue;
       const double w = std::max({x[0].hi - x[0].lo, x[1].hi - x[1].lo, x[2].hi - x[2].lo});
       std::array<double, 3> z{x[0].mid(), x[1].mid(), x[2].mid()};
       if (w < 1.0 / 16 && S.newton(chart, z, w)) {
@@ -277,12 +292,10 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
           bool duplicate = false;
           for (const Found& g : found) duplicate = duplicate || same(f, g) || same(g, f);
           if (!duplicate) found.push_back(f);
-          regions.emplace_back(chart, U);
+          add_region(chart, U);
           break;
         }
-        bool now_covered = false;
-        for (const auto& reg : regions) now_covered = now_covered || (reg.first == chart && contains(reg.second));
-        if (now_covered) continue;
+        if (covered()) continue;
       }
       if (cell.depth >= 75) {
         out.complete = false;
