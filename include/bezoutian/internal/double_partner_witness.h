@@ -50,12 +50,12 @@ struct Double_interval {
   }
   static Double_interval hull(const Rational& a, const Rational& b) { return {of(a).lo, of(b).hi}; }
   static Double_interval widen(double a, double b) {
-    // a - |a| 2^-52 - 2^-1074 is below a by at least one unit in the last place of the rounded difference (the
-    // scaling by 2^-52 is exact, and a difference of one or more ulps rounds to nearest at least one ulp below a),
-    // which covers one rounding to nearest (half an ulp, or 2^-1075 in the subnormal range); symmetrically above.
-    const double lo = a - std::fabs(a) * 0x1p-52 - 0x1p-1074, hi = b + std::fabs(b) * 0x1p-52 + 0x1p-1074;
-    if (!(lo <= hi)) return {-HUGE_VAL, HUGE_VAL};  // a NaN end
-    return {lo, hi};
+    // one ulp outwards covers one rounding to nearest. An end rounded to +-inf on the inside (a lower end +inf,
+    // an upper end -inf: an overflow) stands for a finite exact value beyond DBL_MAX: it becomes +-DBL_MAX, so
+    // that the enclosure keeps the exact value (the old widen left +inf there).
+    if (std::isnan(a) || std::isnan(b)) return {-HUGE_VAL, HUGE_VAL};
+    const double M = std::numeric_limits<double>::max();
+    return {a == HUGE_VAL ? M : next(a, false), b == -HUGE_VAL ? -M : next(b, true)};
   }
   // The neighbouring double towards +infinity (up) or -infinity (std::nextafter without the library call).
   static double next(double x, bool up) {
