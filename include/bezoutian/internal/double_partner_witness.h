@@ -122,6 +122,11 @@ struct Lazy_horner {
       return x.hi;
     }
     const double a = lo * x.lo, b = lo * x.hi, c = hi * x.lo, d = hi * x.hi;
+    if (std::isnan(a + b + c + d)) {  // inf * 0 or infinite ends (std::min would drop a NaN): no information
+      lo = -HUGE_VAL;
+      hi = HUGE_VAL;
+      return std::max(-x.lo, std::fabs(x.hi));
+    }
     lo = std::min(std::min(a, b), std::min(c, d));
     hi = std::max(std::max(a, b), std::max(c, d));
     return std::max(-x.lo, std::fabs(x.hi));
