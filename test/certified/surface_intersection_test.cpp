@@ -769,3 +769,36 @@ TEST_CASE("point-wise status proofs: phantom by the kernel of B, genuine by Kraw
   CHECK(proved[1] >= 200);  // intersection (571)
   CHECK(proved_genuine >= 300);  // (about 600)
 }
+
+TEST_CASE("a node with almost tangent branches is certified: the box around it is cut around Newton's point",
+          "[surface][subdivision]") {
+  // The fifth problem of seed 26 of the random sweep (a polynomial (3, 2) self-intersection, D of total degree 34)
+  // has a node at (0.14305488397, 0.20962656848) whose branches meet at 0.035 rad (located independently: Newton's
+  // method on grad D from D's exact Taylor expansion, session 18). Split at fixed ratios, the box that finally
+  // proves the node has it 5e-8 from an edge, and in the next box the two branches are 1.8e-9 apart: no box down
+  // to depth 30 separated them. Cut around the node (Subdivision_topology::cut_around), it is certified.
+  std::mt19937 g(26);
+  std::vector<Patch> drawn;
+  for (int trial = 0; trial <= 4; ++trial) {  // the sweep draws two patches per problem
+    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
+    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
+  }
+  const Patch& a = drawn[8];
+  Surface_intersection_options o;
+  o.certify_lifting = false;
+  o.pinch_point_boxes = 0;
+  o.max_total_degree_for_topology = 0;  // the subdivision only
+  const Surface_locus L = self_intersection_locus(a, o);
+  INFO(L.note);
+  REQUIRE(L.topology_method == "subdivision");
+  int nodes = 0;
+  for (const Curve_topology_vertex& x : L.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular && std::fabs(x.u - 0.14305488397) < 1e-9 &&
+        std::fabs(x.v - 0.20962656848) < 1e-9) {
+      ++nodes;
+      CHECK(x.branches == 2);
+      CHECK(x.u_lo <= x.u);
+      CHECK(x.u <= x.u_hi);
+    }
+  CHECK(nodes == 1);
+}
