@@ -46,7 +46,9 @@
 // B \ (D = 0) that does not reach the edges of B would hold an extremum of D, a critical point other than p;
 // so every arc of D = 0 in B reaches the edges, and the four half-branches at a nondegenerate saddle use up the
 // four crossings. If D(p) is proved nonzero the box is split as usual; if D(p) = 0 can be neither proved nor
-// excluded, the result is not certified (with that reason).
+// excluded, the result is not certified (with that reason). From depth 10 on, a box that is not resolved but holds
+// a floating-point critical point p next to the curve is cut 3 x 3 around p instead of split (cut_around): a node
+// with almost tangent branches is otherwise left next to an edge, where the box beside it cannot separate them.
 //
 // Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
 // order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their
