@@ -1139,11 +1139,12 @@ class Subdivision_topology {
     // boxes that hold it. A plain split leaves it next to an edge as often as not, and a node whose two branches
     // are almost tangent is then unresolvable in the box beside it (a random (3,2) self-intersection: an angle of
     // 0.035 rad, the node 5e-8 from the edge of its box, the branches 1.8e-9 apart in the next box).
-    const auto jet = local_jet(L, x, y);  // in B's local coordinates: |D(p)| against the Hessian's entries
-    if (converged && B.depth >= cut_depth &&
-        std::fabs(jet[0]) <= std::ldexp(std::fabs(jet[3]) + std::fabs(jet[4]) + std::fabs(jet[5]), -24)) {
-      cut_pending_ = true;
-      cut_point_ = Parameter_box{Rational(approx[0]), Rational(approx[0]), Rational(approx[1]), Rational(approx[1])};
+    if (converged && B.depth >= cut_depth) {
+      const auto jet = local_jet(L, x, y);  // in B's local coordinates: |D(p)| against the Hessian's entries
+      if (std::fabs(jet[0]) <= std::ldexp(std::fabs(jet[3]) + std::fabs(jet[4]) + std::fabs(jet[5]), -24)) {
+        cut_pending_ = true;
+        cut_point_ = Parameter_box{Rational(approx[0]), Rational(approx[0]), Rational(approx[1]), Rational(approx[1])};
+      }
     }
     if (hessian_undecided) return false;
     if (o_.no_genuine_points && B.depth < undecided_depth)  // D(p) = 0 already neither proved nor excluded
