@@ -50,6 +50,12 @@
 // a floating-point critical point p next to the curve is cut 3 x 3 around p instead of split (cut_around): a node
 // with almost tangent branches is otherwise left next to an edge, where the box beside it cannot separate them.
 //
+// Two branches in one box (internal/two_branch_box.h): from depth options.two_branch_depth on, a box that is
+// neither excluded, simple nor resolved around a singular point is resolved when D_yy keeps a sign on it (y = v, or
+// u) and no point of the box has D = D_y = 0: D = 0 is then two families of graphs over x, told apart by the sign of
+// D_y, and the exact crossings of each family pair up along x as in a simple box. Two arcs close together (between
+// two nodes with nearly tangent branches, along a thin loop) no longer need boxes thinner than their gap.
+//
 // Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
 // order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their
 // Hessian vanishes, so (1)-(2) fail there. A box B with K strictly inside is resolved when
@@ -73,6 +79,7 @@
 #include <bezoutian/internal/double_double_bernstein.h>
 #include <bezoutian/internal/interval_krawczyk.h>
 #include <bezoutian/internal/multiple_point_blowup.h>
+#include <bezoutian/internal/two_branch_box.h>
 #include <bezoutian/number_types.h>
 
 #include <CGAL/Interval_nt.h>
@@ -130,6 +137,9 @@ struct Subdivision_topology_options {
   /// points cannot resolve; a box that contains one is resolved around it by the blow-up analysis of the header
   /// comment. Empty: such points leave the result not certified.
   std::vector<Known_multiple_point> multiple_points;
+  /// From this depth on, a box that is neither excluded, simple nor resolved around a singular point tries the
+  /// two-branch certificate (two arcs of D = 0 close together, internal/two_branch_box.h); INT_MAX disables it.
+  int two_branch_depth = 6;
 };
 
 /// Result of subdivide_curve_in_box().
@@ -139,6 +149,7 @@ struct Subdivision_topology_result {
   std::vector<Parameter_box> unresolved;  ///< the box that was neither excluded nor simple at max_depth
   std::size_t boxes = 0;                  ///< boxes examined
   std::string reason;                     ///< why not certified
+  std::size_t two_branch_boxes = 0;       ///< leaf boxes resolved by the two-branch certificate
 };
 
 namespace internal {
@@ -243,6 +254,7 @@ class Subdivision_topology {
         const int m = multiple_point_in(B);
         if (m >= 0 && resolve_multiple(B, std::size_t(m))) continue;
         if (!failed_ && resolve_singular(B)) continue;
+        if (!failed_ && m < 0 && B.depth >= o_.two_branch_depth && resolve_two_branches(B)) continue;
         if (!failed_ && m < 0 && B.depth >= rational_multiple_depth) {  // a multiple point at a small rational?
           const int r = rational_multiple_point(B);
           if (r >= 0 && resolve_multiple(B, std::size_t(r))) continue;
@@ -273,6 +285,7 @@ class Subdivision_topology {
       return res;
     }
     res.certified = true;
+    res.two_branch_boxes = two_branch_boxes_;
     return res;
   }
 
@@ -302,6 +315,8 @@ class Subdivision_topology {
     std::vector<std::array<double, 2>> inner;    // sample points from n0 to n1 (exclusive)
     Parameter_box cell;                          // the leaf box holding the arc
     int graph_axis = -1;                         // 0: a graph v = g(u) in cell, 1: u = g(v), -1: singular box
+                                                 // (n0 the crossing, n1 the singular point) or two-branch box
+                                                 // (n0 the crossing the lifting's chained proof starts from)
   };
   struct Line {
     std::vector<Isolated_root> roots;  // on the whole domain range of the other variable
@@ -861,6 +876,97 @@ class Subdivision_topology {
       return false;
     for (const Crossing& c : cr) cut_.insert(node(c.vertical, c.c, c.index));
     excised_.push_back(Parameter_box{B.u0, B.u1, B.v0, B.v1});
+    return true;
+  }
+
+  // ---- two branches in one box (internal/two_branch_box.h) ----
+  // The sign of D_y at a crossing of an edge of B (y = v for axis 0, u for axis 1): first from B's grid (the
+  // Bernstein coefficients of D_y on that edge, differences of the grid's, at the crossing's isolating interval, in
+  // interval arithmetic), else exactly (along its line D_y is the derivative of D restricted to the line, across
+  // it the restricted derivative across; both cached per line).
+  int cross_derivative_sign(const Box& B, const Crossing& c, int axis) {
+    const Algebraic_real& r = line_root(c);
+    const Double_bernstein_grid& G = *B.fast;
+    const bool across_u = axis == 1;  // D_u: differences along i, else along j
+    const int a = G.a(), b = G.b();
+    if ((across_u ? a : b) >= 1) {
+      const Rational &lo = c.vertical ? B.v0 : B.u0, &hi = c.vertical ? B.v1 : B.u1;
+      const auto tl = CGAL::to_interval((r.lower() - lo) / (hi - lo)), th = CGAL::to_interval((r.upper() - lo) / (hi - lo));
+      const Double_interval t{std::max(0.0, tl.first), std::min(1.0, th.second)};
+      const bool high = c.vertical ? c.c == B.u1 : c.c == B.v1;  // which edge of B: u = u1 (v = v1) or u0 (v0)
+      const int n = c.vertical ? b - (across_u ? 0 : 1) : a - (across_u ? 1 : 0);  // degree along the edge
+      const double r2 = 2 * G.radius();
+      std::vector<Double_interval> w(std::size_t(n + 1));
+      for (int k = 0; k <= n; ++k) {
+        // the grid index of the k-th coefficient along the edge and the difference across y
+        const int i = c.vertical ? (high ? (across_u ? a - 1 : a) : 0) : k, j = c.vertical ? k : (high ? (across_u ? b : b - 1) : 0);
+        const double g1 = across_u ? G.at(i + 1, j) : G.at(i, j + 1), g0 = G.at(i, j);
+        w[std::size_t(k)] = (Double_interval{g1, g1} - Double_interval{g0, g0}) + Double_interval{-r2, r2};
+      }
+      const Double_interval s = Double_interval::widen(1 - t.hi, 1 - t.lo);
+      for (int level = 1; level <= n; ++level)
+        for (int k = 0; k + level <= n; ++k) w[std::size_t(k)] = s * w[std::size_t(k)] + t * w[std::size_t(k + 1)];
+      if (w[0].lo > 0) return 1;
+      if (w[0].hi < 0) return -1;
+    }
+    auto key = std::make_pair(c.vertical, c.c);
+    auto it = restrictions_.find(key);
+    if (it == restrictions_.end()) {
+      std::pair<Polynomial_1<Rational>, Polynomial_1<Rational>> PQ;
+      restriction(c.vertical, c.c, PQ.first, &PQ.second);
+      PQ.first = CGAL::differentiate(PQ.first);
+      it = restrictions_.emplace(key, std::move(PQ)).first;
+    }
+    const bool along = (axis == 0) == c.vertical;
+    return r.sign_of(along ? it->second.first : it->second.second);
+  }
+  const Algebraic_real& line_root(const Crossing& c) const {
+    return lines_.at(std::make_pair(c.vertical, c.c)).roots[std::size_t(c.index)].root;
+  }
+  // A box with two branches (two_branch_certificate): the crossings of each class sigma D_y < 0, sigma D_y > 0, sorted
+  // along x, pair up into arcs, as in a simple box. Each arc starts at (n0) the end that lies on a line x = const
+  // when there is one: the lifting's chained proof runs from n0 along x (certify_half_branch).
+  bool resolve_two_branches(const Box& B) {
+    std::size_t strips = 0;  // strip grids computed, each about as costly as one double split of B: the budget
+    const Two_branch_box t = two_branch_certificate(*B.fast, 4, &strips);
+    work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+    if (t.axis < 0) return false;
+    for (const Rational* cu : {&B.u0, &B.u1})  // the curve through a domain corner: not handled here
+      for (const Rational* cv : {&B.v0, &B.v1})
+        if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) && exact_jet(*cu, *cv)[0] == 0)
+          return false;
+    const bool by_u = t.axis == 0;
+    std::vector<Crossing> cr;
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr))
+      return false;
+    std::vector<Crossing> cls[2];
+    for (const Crossing& c : cr) {
+      const int s = cross_derivative_sign(B, c, t.axis);
+      if (s == 0) return false;  // D = D_y = 0 on the edge: excluded by the certificate; be safe and split
+      cls[s > 0 ? 1 : 0].push_back(c);
+    }
+    // one family alone is one arc (or several) that a split resolves as well, on smaller cells whose graph
+    // structure the lifting's proofs use: the certificate is kept for boxes that do hold two branches
+    if (cls[0].empty() || cls[1].empty()) return false;
+    for (auto& k : cls) {
+      if (k.size() % 2 != 0) return false;
+      std::sort(k.begin(), k.end(), [](const Crossing& x, const Crossing& y) { return x.position < y.position; });
+    }
+    for (int side = 0; side < 2; ++side) {
+      // the branch's root on a line x = const lies below the minimiser of sigma D (on the lines x = const) iff
+      // sigma D_y < 0 on it
+      const int root_side = (side == 1) == (t.sigma > 0) ? 1 : -1;
+      const std::vector<Crossing>& k = cls[side];
+      for (std::size_t i = 0; i + 1 < k.size(); i += 2) {
+        const bool second = k[i].vertical != by_u && k[i + 1].vertical == by_u;  // anchor on a line x = const
+        const Crossing &a = second ? k[i + 1] : k[i], &b = second ? k[i] : k[i + 1];
+        Arc arc{node(a.vertical, a.c, a.index), node(b.vertical, b.c, b.index), {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
+        sample_arc(B, by_u, a.position, b.position, arc.inner, root_side, t.sigma);
+        arcs_.push_back(arc);
+      }
+    }
+    ++two_branch_boxes_;
     return true;
   }
 
@@ -1491,8 +1597,10 @@ class Subdivision_topology {
 
   // Floating-point samples strictly between the two ends: the unique crossing of the segment u = const
   // (v = const) with the curve, by a bracketing root refinement (Illinois with a bisection every fourth step).
+  // In a two-branch box (root_side != 0) the line carries up to two crossings, on either side of the minimiser of
+  // sigma D: the one below it (root_side -1) or above it (+1).
   void sample_arc(const Box& B, bool by_u, const Algebraic_real& p0, const Algebraic_real& p1,
-                  std::vector<std::array<double, 2>>& out) const {
+                  std::vector<std::array<double, 2>>& out, int root_side = 0, int sigma = 0) const {
     // Bisection on the sign of D along the line through each sample abscissa, evaluated from the box's double
     // Bernstein grid by de Casteljau's algorithm (stable; the power form cancels catastrophically at high degree
     // and put samples on the box edge). The box is simple in this direction: one sign change on each line.
@@ -1529,7 +1637,9 @@ class Subdivision_topology {
       };
       // Illinois (regula falsi with halving of the retained end's value), every fourth step a bisection: the
       // bracket always holds the sign change and shrinks superlinearly (plain bisection needed 60 evaluations)
-      double a = 0, b = 1, fa = f(a), fb = f(b);
+      double a = 0, b = 1;
+      if (root_side != 0) (root_side < 0 ? b : a) = two_branch::minimiser(c, sigma);
+      double fa = f(a), fb = f(b);
       const bool bracketed = (fa < 0) != (fb < 0) && fa != 0 && fb != 0;
       int kept = 0;  // which end was retained last (-1 a, 1 b)
       for (int it = 0; it < 80 && b - a > 4.5e-16; ++it) {  // (t in [0, 1]: a few ulps)
@@ -1775,6 +1885,9 @@ class Subdivision_topology {
   // From this depth on, a box that holds a critical point of D next to the curve and is not resolved is cut around
   // it (resolve_singular sets cut_point_, the main loop cuts).
   static constexpr int cut_depth = 10;
+  std::size_t two_branch_boxes_ = 0;
+  // per line (vertical, c): the derivative of D along it and across it, restricted to it
+  std::map<std::pair<bool, Rational>, std::pair<Polynomial_1<Rational>, Polynomial_1<Rational>>> restrictions_;
   bool cut_pending_ = false;
   Parameter_box cut_point_{};
   std::set<std::size_t> cut_;             // nodes on the edges of excised boxes

@@ -802,3 +802,35 @@ TEST_CASE("a node with almost tangent branches is certified: the box around it i
     }
   CHECK(nodes == 1);
 }
+
+TEST_CASE("two branches close together between two nodes are certified by the two-branch certificate",
+          "[surface][subdivision][two_branch]") {
+  // The fifth problem of seed 6 of the random sweep (a polynomial (3, 2) self-intersection, D of total degree 34):
+  // two nodes near (0.9382, 0.9376) and (0.8726, 0.8318) (located in session 19 from the boxes the subdivision
+  // could not resolve), joined by two branches that run close together along the whole stretch. Quadtree boxes had
+  // to be thinner than the gap all along it, and the subdivision spent its 20000 boxes; boxes that hold both branches
+  // are now resolved whole (internal/two_branch_box.h).
+  std::mt19937 g(6);
+  std::vector<Patch> drawn;
+  for (int trial = 0; trial <= 4; ++trial) {  // the sweep draws two patches per problem
+    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
+    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
+  }
+  Surface_intersection_options o;
+  o.certify_lifting = false;
+  o.pinch_point_boxes = 0;
+  o.max_total_degree_for_topology = 0;  // the subdivision only
+  const Surface_locus L = self_intersection_locus(drawn[8], o);
+  INFO(L.note);
+  REQUIRE(L.topology_method == "subdivision");
+  const double node[2][2] = {{0.9382, 0.9376}, {0.8726, 0.8318}};
+  for (const auto& p : node) {
+    int found = 0;
+    for (const Curve_topology_vertex& x : L.topology.vertices)
+      if (x.kind == Curve_topology_vertex::singular && std::fabs(x.u - p[0]) < 1e-4 && std::fabs(x.v - p[1]) < 1e-4) {
+        ++found;
+        CHECK(x.branches == 2);
+      }
+    CHECK(found == 1);
+  }
+}

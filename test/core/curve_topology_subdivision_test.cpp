@@ -523,3 +523,57 @@ TEST_CASE("subdivision: singular points on the box's boundary are reported as no
     CHECK(r.reason.find(c.where) != std::string::npos);
   }
 }
+
+TEST_CASE("subdivision: two branches close together (a thin loop, a pair of nearly tangent nodes) are certified",
+          "[topology][subdivision][two_branch]") {
+  // A loop of width at most 2^-9 along the parabola w = 4v - 1 - u - u^2 = 0: 2^20 w^2 = 1 - 4 (2u - 1)^2, so
+  // |w| = 2^-10 sqrt(1 - 4 (2u - 1)^2) for u in [1/4, 3/4]. A quadtree alone needs boxes thinner than the gap all
+  // along it (it spent its 20000 boxes); boxes holding both branches are resolved by the two-branch certificate.
+  const P2 w = 4 * v - 1 - u - u * u;
+  const P2 loop = CGAL::ipower(P2(2), 20) * w * w - 1 + 4 * (2 * u - 1) * (2 * u - 1);
+  auto r = subdivide_curve_in_box(loop, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.two_branch_boxes > 0);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 1);
+  CHECK(r.topology.number_of_singular_points() == 0);
+  CHECK(r.topology.number_of_boundary_points() == 0);
+  check_samples(loop, r.topology, 1e-9);
+  double lo = 1, hi = 0;
+  std::size_t above = 0, below = 0;
+  for (const auto& e : r.topology.edges)
+    for (const auto& p : e.polyline) {
+      const double x = p[0], W = 4 * p[1] - 1 - x - x * x, half = std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * x - 1) * (2 * x - 1))), -10);
+      CHECK(std::fabs(std::fabs(W) - half) < 1e-6);  // on one of the two branches (both are traced)
+      (W > 0 ? above : below) += std::fabs(x - 0.5) < 0.2;
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+  CHECK(above > 10);
+  CHECK(below > 10);
+  CHECK(lo < 0.26);
+  CHECK(hi > 0.74);
+  // Two nodes at the rational points (1/3, 13/36) and (2/3, 19/36), joined by the branches w = +-2^-6 (3u-1)(3u-2),
+  // which cross there at 0.023 rad and continue to the edges u = 0 and u = 1: one component, 4 boundary points.
+  const P2 nodes = CGAL::ipower(P2(2), 12) * w * w - (3 * u - 1) * (3 * u - 1) * (3 * u - 2) * (3 * u - 2);
+  r = subdivide_curve_in_box(nodes, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.two_branch_boxes > 0);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 0);
+  CHECK(r.topology.number_of_boundary_points() == 4);
+  CHECK(r.topology.edges.size() == 6);
+  REQUIRE(r.topology.number_of_singular_points() == 2);
+  for (const auto& x : r.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.branches == 2);
+      const bool first = x.u < 0.5;
+      const double pu = first ? 1.0 / 3 : 2.0 / 3, pv = first ? 13.0 / 36 : 19.0 / 36;
+      CHECK(x.u_lo <= pu);
+      CHECK(pu <= x.u_hi);
+      CHECK(x.v_lo <= pv);
+      CHECK(pv <= x.v_hi);
+    }
+  check_samples(nodes, r.topology, 1e-9);
+}

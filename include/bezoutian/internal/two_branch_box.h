@@ -1,0 +1,242 @@
+// Two arcs of D = 0 in one box of the subdivision (Curve_topology_by_subdivision.h) where neither derivative of D
+// keeps a sign. Two branches that run close together (between two nodes with nearly tangent branches, along a thin
+// loop) otherwise force quadtree boxes thinner than the gap between them all along their length: a random (3,2)
+// self-intersection spent 20000 boxes on such a pair and was not certified. This certificate resolves the box whole.
+//
+// Let y be the coordinate across the branches (v for graphs v = g(u), u for graphs u = g(v)) and x the other one.
+//  (1) The Bernstein second differences of D in y have one strict sign sigma on the box: sigma D_yy > 0, so on each
+//      line x = const, sigma D is strictly convex and has at most two zeros, one with sigma D_y < 0 and one with
+//      sigma D_y > 0.
+//  (2) No fold: no point of the closed box with D = D_y = 0. At such a point sigma D would reach its minimum 0 on
+//      that line, so it suffices that on each line x = const either D_y or D has no zero, or sigma D takes a
+//      negative value. The x-range is cut into pieces X (halving); on each, the Bernstein coefficients of D on the
+//      strip X x [0, 1] prove D_y != 0 (differences in y of one strict sign) or D != 0 (one strict sign), or those
+//      of D restricted to a segment across the strip (from the minimiser of sigma D on the strip's left edge to the
+//      one on its right edge, a segment inside the box over all of X) all have the sign -sigma.
+// Then D = 0 in the box is the disjoint union of C- = {D = 0, sigma D_y < 0} and C+ = {D = 0, sigma D_y > 0}, both
+// closed in the box, smooth (D_y != 0) and meeting each line x = const at most once: each is, like the curve in a
+// simple box, a union of graphs over disjoint x-intervals whose ends are crossings of the box's edges. The caller
+// classifies the exact crossings by the exact sign of D_y there and pairs consecutive crossings of each class
+// along x.
+//
+// Interval arithmetic: Double_interval (one ulp outward per operation) on the grid's proved enclosures
+// 2^e (m_ij +- rho); only the signs matter, so the common scale 2^e is left out. Restricting Bernstein coefficients to
+// a sub-interval (de Casteljau) and to a segment (the restriction of each row, then the product rule
+// B_p^n B_q^m = C(n,p) C(m,q) / C(n+m,p+q) B_(p+q)^(n+m); the positive factor 1 / C(n+m, k) does not change signs).
+#ifndef BEZOUTIAN_INTERNAL_TWO_BRANCH_BOX_H
+#define BEZOUTIAN_INTERNAL_TWO_BRANCH_BOX_H
+
+#include <bezoutian/internal/double_bernstein_grid.h>
+#include <bezoutian/internal/double_interval.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+/// What two_branch_certificate() proved: axis 0, graphs v = g(u) (y = v); axis 1, graphs u = g(v) (y = u); -1 nothing.
+/// sigma: the sign of D_yy on the box.
+struct Two_branch_box {
+  int axis = -1;
+  int sigma = 0;
+};
+
+namespace two_branch {
+
+using I = Double_interval;
+
+// The two arithmetics of the certificate: Double_interval proves, plain double (midpoints) only screens a box
+// first, at a fraction of the cost, so that boxes with a fold are rejected cheaply.
+inline I constant(const I&, double x) { return I{x, x}; }
+inline double constant(double, double x) { return x; }
+inline I one_minus(const I& r) { return I::widen(1 - r.hi, 1 - r.lo); }
+inline double one_minus(double r) { return 1 - r; }
+inline I ratio(const I&, double a, double b) {
+  I r = I::widen(a / b, a / b);
+  r.hi = std::min(r.hi, 1.0);
+  return r;
+}
+inline double ratio(double, double a, double b) { return a / b; }
+inline double lower(const I& x) { return x.lo; }
+inline double upper(const I& x) { return x.hi; }
+inline double lower(double x) { return x; }
+inline double upper(double x) { return x; }
+inline double middle(const I& x) { return x.mid(); }
+inline double middle(double x) { return x; }
+
+// Bernstein coefficients w[0..n] of a polynomial on [0, 1] replaced by those of its restriction to [lo, hi]
+// (0 <= lo <= hi <= 1): the left part of a de Casteljau split at hi, then the right part of that at lo / hi.
+template <class T>
+void restrict_to(std::vector<T>& w, double lo, double hi) {
+  const std::size_t n = w.size() - 1;
+  if (n == 0 || (lo == 0 && hi == 1)) return;
+  std::vector<T> c(w), out(w.size());
+  auto level_step = [&](const T& r, std::size_t level) {
+    const T s = one_minus(r);
+    for (std::size_t k = 0; k + level <= n; ++k) c[k] = s * c[k] + r * c[k + 1];
+  };
+  if (hi < 1) {
+    const T r = constant(T{}, hi);
+    out[0] = c[0];
+    for (std::size_t level = 1; level <= n; ++level) level_step(r, level), out[level] = c[0];
+    c = out;
+  }
+  if (lo > 0) {
+    const T r = ratio(T{}, lo, hi);
+    out[n] = c[n];
+    for (std::size_t level = 1; level <= n; ++level) level_step(r, level), out[n - level] = c[n - level];
+    c = out;
+  }
+  w = c;
+}
+
+// The point of [0, 1] where sigma P is least, P(y) = sum_j c_j B_j(y) strictly convex times sigma (floating point: it
+// only chooses a segment, whose coefficients are then proved).
+inline double minimiser(const std::vector<double>& c, int sigma) {
+  const std::size_t n = c.size() - 1;
+  std::vector<double> d(n), w(n);
+  for (std::size_t j = 0; j < n; ++j) d[j] = sigma * (c[j + 1] - c[j]);
+  if (d[0] >= 0) return 0;
+  if (d[n - 1] <= 0) return 1;
+  auto value = [&](double t) {
+    std::copy(d.begin(), d.end(), w.begin());
+    for (std::size_t r = 1; r < n; ++r)
+      for (std::size_t k = 0; k + r < n; ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
+    return w[0];
+  };
+  double a = 0, b = 1;
+  for (int it = 0; it < 55 && b - a > 1e-16; ++it) {
+    const double m = 0.5 * (a + b);
+    (value(m) < 0 ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
+// A grid of coefficients, i along x (0..nx), j along y (0..ny).
+template <class T>
+struct Grid {
+  int nx = 0, ny = 0;
+  std::vector<T> v;
+  T& at(int i, int j) { return v[std::size_t(i) * (ny + 1) + j]; }
+  const T& at(int i, int j) const { return v[std::size_t(i) * (ny + 1) + j]; }
+};
+
+template <class T>
+int common_sign(const Grid<T>& g) {
+  bool pos = true, neg = true;
+  for (const T& x : g.v) pos = pos && lower(x) > 0, neg = neg && upper(x) < 0;
+  return pos ? 1 : (neg ? -1 : 0);
+}
+
+template <class T>
+int difference_sign_y(const Grid<T>& g) {
+  bool pos = true, neg = true;
+  for (int i = 0; i <= g.nx && (pos || neg); ++i)
+    for (int j = 0; j < g.ny; ++j) {
+      const T d = g.at(i, j + 1) - g.at(i, j);
+      pos = pos && lower(d) > 0;
+      neg = neg && upper(d) < 0;
+    }
+  return pos ? 1 : (neg ? -1 : 0);
+}
+
+// Binomial coefficients C(n, k) (as intervals: Pascal's triangle with outward rounding).
+template <class T>
+std::vector<T> binomials(int n) {
+  std::vector<T> c(std::size_t(n + 1), constant(T{}, 0));
+  c[0] = constant(T{}, 1);
+  for (int r = 1; r <= n; ++r)
+    for (int k = r; k >= 1; --k) c[std::size_t(k)] = c[std::size_t(k)] + c[std::size_t(k - 1)];
+  return c;
+}
+
+// True if every line x = const of the strip [xa, xb] x [0, 1] (in the box's local coordinates) carries no point with
+// D = D_y = 0: by one of the three tests of the header comment, on halves of the strip down to `max_depth` halvings.
+// `strips` counts the strip grids computed (the work).
+template <class N>
+bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
+  struct Piece {
+    double xa, xb;
+    int depth;
+  };
+  const std::vector<N> cx = binomials<N>(S.nx), cy = binomials<N>(S.ny);
+  std::vector<Piece> todo{{0, 1, 0}};
+  Grid<N> T{S.nx, S.ny, std::vector<N>(S.v.size())};
+  std::vector<N> w;
+  while (!todo.empty()) {
+    const Piece p = todo.back();
+    todo.pop_back();
+    ++strips;
+    for (int j = 0; j <= S.ny; ++j) {  // the strip's grid: each column restricted to [xa, xb]
+      w.resize(std::size_t(S.nx + 1));
+      for (int i = 0; i <= S.nx; ++i) w[std::size_t(i)] = S.at(i, j);
+      restrict_to(w, p.xa, p.xb);
+      for (int i = 0; i <= S.nx; ++i) T.at(i, j) = w[std::size_t(i)];
+    }
+    if (difference_sign_y(T) != 0 || common_sign(T) != 0) continue;
+    // the segment between the minimisers of sigma D on the strip's two edges x = xa and x = xb
+    std::vector<double> left(std::size_t(S.ny + 1)), right(std::size_t(S.ny + 1));
+    for (int j = 0; j <= S.ny; ++j) left[std::size_t(j)] = middle(T.at(0, j)), right[std::size_t(j)] = middle(T.at(S.nx, j));
+    double ya = minimiser(left, sigma), yb = minimiser(right, sigma);
+    const bool reversed = ya > yb;  // then run x backwards, so that the segment rises from ya to yb
+    if (reversed) std::swap(ya, yb);
+    // g_k = sum_{p+q=k} C(nx,p) C(ny,q) r_pq, r_p. the coefficients of row p restricted to [ya, yb]: C(nx+ny, k)
+    // times the Bernstein coefficients of D on the segment
+    std::vector<N> g(std::size_t(S.nx + S.ny + 1), constant(N{}, 0));
+    for (int i = 0; i <= S.nx; ++i) {
+      const int row = reversed ? S.nx - i : i;
+      w.resize(std::size_t(S.ny + 1));
+      for (int j = 0; j <= S.ny; ++j) w[std::size_t(j)] = T.at(row, j);
+      restrict_to(w, ya, yb);
+      for (int q = 0; q <= S.ny; ++q) g[std::size_t(i + q)] = g[std::size_t(i + q)] + cx[std::size_t(i)] * cy[std::size_t(q)] * w[std::size_t(q)];
+    }
+    bool negative = true;  // sigma D < 0 on the segment
+    for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
+    if (negative) continue;
+    if (p.depth >= max_depth) return false;
+    const double m = 0.5 * (p.xa + p.xb);
+    todo.push_back({m, p.xb, p.depth + 1});
+    todo.push_back({p.xa, m, p.depth + 1});
+  }
+  return true;
+}
+
+}  // namespace two_branch
+
+/// The certificate of the header comment on the box whose Bernstein grid is G (proved radius): graphs over u are
+/// tried first, then graphs over v. `max_depth`: halvings of the x-range in the fold test.
+inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int max_depth = 4,
+                                             std::size_t* strips = nullptr) {
+  const double rho = G.radius();
+  std::size_t work = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
+    if (ny < 2) continue;
+    double lo, hi;
+    G.second_difference_range(axis == 0 ? 2 : 0, rho, lo, hi);
+    const int sigma = lo > 0 ? 1 : (hi < 0 ? -1 : 0);
+    if (sigma == 0) continue;
+    two_branch::Grid<double> M{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+    if (!two_branch::no_fold(M, sigma, max_depth, work)) continue;  // the midpoints alone fail: no proof
+    two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
+    for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
+    std::size_t proof = 0;
+    const bool ok = two_branch::no_fold(S, sigma, max_depth, proof);
+    work += 8 * proof;  // an interval operation costs about eight double ones
+    if (ok) {
+      if (strips) *strips += work;
+      return Two_branch_box{axis, sigma};
+    }
+  }
+  if (strips) *strips += work;
+  return Two_branch_box{};
+}
+
+}  // namespace internal
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_INTERNAL_TWO_BRANCH_BOX_H

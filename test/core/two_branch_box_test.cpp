@@ -1,0 +1,69 @@
+// The two-branch certificate (internal/two_branch_box.h) on Bernstein grids of polynomials known in closed form: it
+// must hold where D = 0 is two branches without a fold (D = D_y = 0) in the box, and fail wherever there is one.
+#include <catch2/catch.hpp>
+
+#include <bezoutian/internal/two_branch_box.h>
+
+#include <cmath>
+#include <vector>
+
+using bezoutian::internal::Double_bernstein_grid;
+using bezoutian::internal::Two_branch_box;
+using bezoutian::internal::two_branch_certificate;
+
+namespace {
+double binomial(int n, int k) {
+  double c = 1;
+  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
+  return c;
+}
+// The Bernstein grid on [0, 1]^2 of sum e[i][j] u^i v^j (power form; a, b the degrees), by the conversion
+// b_kl = sum_{i <= k, j <= l} C(k, i) C(l, j) / (C(a, i) C(b, j)) e_ij, with a radius that covers its rounding.
+Double_bernstein_grid grid_of(const std::vector<std::vector<double>>& e) {
+  const int a = int(e.size()) - 1, b = int(e[0].size()) - 1;
+  Double_bernstein_grid g(a, b);
+  double M = 0;
+  for (int k = 0; k <= a; ++k)
+    for (int l = 0; l <= b; ++l) {
+      double s = 0;
+      for (int i = 0; i <= k; ++i)
+        for (int j = 0; j <= l; ++j) s += binomial(k, i) * binomial(l, j) / (binomial(a, i) * binomial(b, j)) * e[i][j];
+      g.at(k, l) = s;
+      M = std::max(M, std::fabs(s));
+    }
+  g.set_radius(1e-13 * M);
+  return g;
+}
+}  // namespace
+
+TEST_CASE("two-branch certificate: two parallel lines, horizontal or slanted, are two branches without a fold",
+          "[topology][subdivision][two_branch]") {
+  // (v - 1/2)^2 - 1/4096: the lines v = 1/2 +- 1/64 (D_v = 0 on v = 1/2, where D = -1/4096 < 0)
+  Two_branch_box t = two_branch_certificate(grid_of({{0.25 - 1.0 / 4096, -1, 1}}));
+  CHECK(t.axis == 0);
+  CHECK(t.sigma == 1);
+  // (v - u/2 - 1/4)^2 - 1/4096: slanted lines; D_v changes sign on every strip, so only the segment along the
+  // midline v = u/2 + 1/4 proves the absence of a fold
+  const double c = 1.0 / 16 - 1.0 / 4096;  // (1/4)^2 - delta^2
+  t = two_branch_certificate(grid_of({{c, -0.5, 1}, {0.25, -1, 0}, {0.25, 0, 0}}));
+  CHECK(t.axis == 0);
+  CHECK(t.sigma == 1);
+  // graphs over v only (D is linear in v): u = 1/2 +- sqrt((1 + v) / 4096), written -D so that sigma = -1
+  const double d = 1.0 / 4096;
+  t = two_branch_certificate(grid_of({{d - 0.25, d}, {1, 0}, {-1, 0}}));
+  CHECK(t.axis == 1);
+  CHECK(t.sigma == -1);
+}
+
+TEST_CASE("two-branch certificate: a fold inside the box (a vertical or horizontal tangent, a node) is refused",
+          "[topology][subdivision][two_branch]") {
+  // the circle (u - 1/2)^2 + (v - 1/2)^2 = 1/16: D_uu, D_vv > 0, but folds at (1/2 +- 1/4, 1/2) and (1/2, 1/2 +- 1/4)
+  CHECK(two_branch_certificate(grid_of({{0.5 - 1.0 / 16, -1, 1}, {-1, 0, 0}, {1, 0, 0}})).axis == -1);
+  // the parabola (v - 1/2)^2 = (u - 1/2) / 4: a vertical tangent at (1/2, 1/2); D is linear in u
+  CHECK(two_branch_certificate(grid_of({{0.25 + 0.125, -1, 1}, {-0.25, 0, 0}})).axis == -1);
+  // two lines crossing at (1/2, 1/2) with nearly equal slopes: (v - 1/2)^2 - (u - 1/2)^2 / 10000 (a node: D = D_v = 0)
+  const double k = 1e-4;
+  CHECK(two_branch_certificate(grid_of({{0.25 - 0.25 * k, -1, 1}, {k, 0, 0}, {-k, 0, 0}})).axis == -1);
+  // a single line crosses nothing twice, but D = (v - 1/2) has no second derivative: not this certificate's case
+  CHECK(two_branch_certificate(grid_of({{-0.5, 1}})).axis == -1);
+}
