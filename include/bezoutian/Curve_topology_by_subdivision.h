@@ -140,6 +140,10 @@ struct Subdivision_topology_options {
   /// From this depth on, a box that is neither excluded, simple nor resolved around a singular point tries the
   /// two-branch certificate (two arcs of D = 0 close together, internal/two_branch_box.h); INT_MAX disables it.
   int two_branch_depth = 6;
+  /// ... and only when its two branches are closer than this fraction of the box (floating point, a policy: two
+  /// branches further apart are separated by a few more splits, into cells where the curve is one graph, and the
+  /// lifting's proofs are stronger there).
+  double two_branch_max_gap = 1.0 / 8;
 };
 
 /// Result of subdivide_curve_in_box().
@@ -928,7 +932,7 @@ class Subdivision_topology {
   // when there is one: the lifting's chained proof runs from n0 along x (certify_half_branch).
   bool resolve_two_branches(const Box& B) {
     std::size_t strips = 0;  // strip grids computed, each about as costly as one double split of B: the budget
-    const Two_branch_box t = two_branch_certificate(*B.fast, 4, &strips);
+    const Two_branch_box t = two_branch_certificate(*B.fast, 4, &strips, o_.two_branch_max_gap);
     work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
     if (t.axis < 0) return false;
     for (const Rational* cu : {&B.u0, &B.u1})  // the curve through a domain corner: not handled here
@@ -1615,8 +1619,11 @@ class Subdivision_topology {
         for (std::size_t k = 0; k + r <= n; ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
       return w[0];
     };
-    for (int k = 1; k < o_.samples_per_arc; ++k) {
-      const double x = x0 + (x1 - x0) * double(k) / o_.samples_per_arc;
+    // an arc of a two-branch box stands for the many leaf boxes a quadtree would need along it (the lifting proves
+    // its statuses span by span between these points): four times as many samples
+    const int samples = root_side != 0 ? 4 * o_.samples_per_arc : o_.samples_per_arc;
+    for (int k = 1; k < samples; ++k) {
+      const double x = x0 + (x1 - x0) * double(k) / samples;
       const double tx = std::min(1.0, std::max(0.0, (x - gx0) / (gx1 - gx0)));
       // coefficients along the line: D(x, .) in the Bernstein basis of the box, sum_i B_i(tx) G(i, .) (the
       // basis values are nonnegative and sum to 1: a convex combination, as stable as de Casteljau)

@@ -41,6 +41,7 @@ namespace internal {
 struct Two_branch_box {
   int axis = -1;
   int sigma = 0;
+  double gap = 1;  ///< floating point: the distance between the two branches across the box (branch_gap)
 };
 
 namespace two_branch {
@@ -94,7 +95,7 @@ void restrict_to(std::vector<T>& w, double lo, double hi) {
 
 // The point of [0, 1] where sigma P is least, P(y) = sum_j c_j B_j(y) strictly convex times sigma (floating point: it
 // only chooses a segment, whose coefficients are then proved).
-inline double minimiser(const std::vector<double>& c, int sigma) {
+inline double minimiser(const std::vector<double>& c, int sigma, int iterations = 55) {
   const std::size_t n = c.size() - 1;
   std::vector<double> d(n), w(n);
   for (std::size_t j = 0; j < n; ++j) d[j] = sigma * (c[j + 1] - c[j]);
@@ -107,7 +108,7 @@ inline double minimiser(const std::vector<double>& c, int sigma) {
     return w[0];
   };
   double a = 0, b = 1;
-  for (int it = 0; it < 55 && b - a > 1e-16; ++it) {
+  for (int it = 0; it < iterations && b - a > 1e-16; ++it) {
     const double m = 0.5 * (a + b);
     (value(m) < 0 ? a : b) = m;
   }
@@ -203,12 +204,51 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   return true;
 }
 
+// Floating point, for the caller's policy (no proof rests on it): the least distance, in the box's local coordinate
+// y, between the two zeros of D on the lines x = 1/4, 1/2, 3/4 that have two; 1 if none has.
+inline double branch_gap(const Grid<double>& M, int sigma) {
+  double gap = 1;
+  std::vector<double> basis(std::size_t(M.nx + 1)), c(std::size_t(M.ny + 1)), w(c.size());
+  auto value = [&](double t) {
+    std::copy(c.begin(), c.end(), w.begin());
+    for (std::size_t r = 1; r < w.size(); ++r)
+      for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
+    return sigma * w[0];
+  };
+  auto root = [&](double a, double b) {  // sigma D > 0 at a, < 0 at b (or the reverse): bisection
+    const bool rising = value(a) < 0;
+    for (int it = 0; it < 24; ++it) {  // a few digits: a policy, not a proof
+      const double m = 0.5 * (a + b);
+      ((value(m) < 0) == rising ? a : b) = m;
+    }
+    return 0.5 * (a + b);
+  };
+  for (double x : {0.25, 0.5, 0.75}) {
+    std::fill(basis.begin(), basis.end(), 0.0);  // the Bernstein basis at x, by de Casteljau's recurrence
+    basis[0] = 1;
+    for (int d = 1; d <= M.nx; ++d)
+      for (int k = d; k >= 0; --k) basis[std::size_t(k)] = (1 - x) * basis[std::size_t(k)] + (k > 0 ? x * basis[std::size_t(k - 1)] : 0);
+    for (int j = 0; j <= M.ny; ++j) {
+      double sum = 0;
+      for (int i = 0; i <= M.nx; ++i) sum += basis[std::size_t(i)] * M.at(i, j);
+      c[std::size_t(j)] = sum;
+    }
+    const double y = minimiser(c, sigma, 24);
+    if (!(value(y) < 0 && value(0) > 0 && value(1) > 0)) continue;
+    gap = std::min(gap, root(y, 1) - root(0, y));
+  }
+  return gap;
+}
+
 }  // namespace two_branch
 
 /// The certificate of the header comment on the box whose Bernstein grid is G (proved radius): graphs over u are
-/// tried first, then graphs over v. `max_depth`: halvings of the x-range in the fold test.
+/// tried first, then graphs over v. `max_depth`: halvings of the x-range in the fold test. `max_gap`: the policy of
+/// the caller (the subdivision), not a condition of the proof: a box whose two branches lie further apart than
+/// that (branch_gap, a fraction of the box) is not tried; a few more splits separate them, into cells where the
+/// curve is one graph (the lifting's proofs are stronger there).
 inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int max_depth = 4,
-                                             std::size_t* strips = nullptr) {
+                                             std::size_t* strips = nullptr, double max_gap = 1) {
   const double rho = G.radius();
   std::size_t work = 0;
   for (int axis = 0; axis < 2; ++axis) {
@@ -221,6 +261,8 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
     two_branch::Grid<double> M{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
     for (int i = 0; i <= nx; ++i)
       for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+    const double gap = max_gap < 1 ? two_branch::branch_gap(M, sigma) : 0;
+    if (!(gap < max_gap)) continue;
     if (!two_branch::no_fold(M, sigma, max_depth, work)) continue;  // the midpoints alone fail: no proof
     two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
     for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
@@ -229,7 +271,7 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
     work += 8 * proof;  // an interval operation costs about eight double ones
     if (ok) {
       if (strips) *strips += work;
-      return Two_branch_box{axis, sigma};
+      return Two_branch_box{axis, sigma, gap};
     }
   }
   if (strips) *strips += work;
