@@ -770,6 +770,17 @@ TEST_CASE("point-wise status proofs: phantom by the kernel of B, genuine by Kraw
   CHECK(proved_genuine >= 300);  // (about 600)
 }
 
+// The first patch of problem `trial` of the random sweep with seed `seed`: problems 0-3 are (2,2), 4-7 (3,2), the
+// rational ones 2, 3, 6, 7; the sweep draws two patches per problem (the second is the partner of a pair).
+static Patch sweep_patch(int seed, int trial) {
+  std::mt19937 g(std::mt19937::result_type(seed));
+  for (int t = 0;; ++t) {
+    Patch a = random_patch(g, 2 + t / 4, 2, t % 4 >= 2);
+    random_patch(g, 2 + t / 4, 2, t % 4 >= 2);
+    if (t >= trial) return a;
+  }
+}
+
 TEST_CASE("a node with almost tangent branches is certified: the box around it is cut around Newton's point",
           "[surface][subdivision]") {
   // The fifth problem of seed 26 of the random sweep (a polynomial (3, 2) self-intersection, D of total degree 34)
@@ -777,13 +788,7 @@ TEST_CASE("a node with almost tangent branches is certified: the box around it i
   // method on grad D from D's exact Taylor expansion, session 18). Split at fixed ratios, the box that finally
   // proves the node has it 5e-8 from an edge, and in the next box the two branches are 1.8e-9 apart: no box down
   // to depth 30 separated them. Cut around the node (Subdivision_topology::cut_around), it is certified.
-  std::mt19937 g(26);
-  std::vector<Patch> drawn;
-  for (int trial = 0; trial <= 4; ++trial) {  // the sweep draws two patches per problem
-    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
-    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
-  }
-  const Patch& a = drawn[8];
+  const Patch a = sweep_patch(26, 4);
   Surface_intersection_options o;
   o.certify_lifting = false;
   o.pinch_point_boxes = 0;
@@ -810,17 +815,11 @@ TEST_CASE("two branches close together between two nodes are certified by the tw
   // could not resolve), joined by two branches that run close together along the whole stretch. Quadtree boxes had
   // to be thinner than the gap all along it, and the subdivision spent its 20000 boxes; boxes that hold both branches
   // are now resolved whole (internal/two_branch_box.h).
-  std::mt19937 g(6);
-  std::vector<Patch> drawn;
-  for (int trial = 0; trial <= 4; ++trial) {  // the sweep draws two patches per problem
-    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
-    drawn.push_back(random_patch(g, 2 + trial / 4, 2, trial % 4 >= 2));
-  }
   Surface_intersection_options o;
   o.certify_lifting = false;
   o.pinch_point_boxes = 0;
   o.max_total_degree_for_topology = 0;  // the subdivision only
-  const Surface_locus L = self_intersection_locus(drawn[8], o);
+  const Surface_locus L = self_intersection_locus(sweep_patch(6, 4), o);
   INFO(L.note);
   REQUIRE(L.topology_method == "subdivision");
   const double node[2][2] = {{0.9382, 0.9376}, {0.8726, 0.8318}};
