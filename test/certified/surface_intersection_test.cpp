@@ -773,7 +773,7 @@ TEST_CASE("point-wise status proofs: phantom by the kernel of B, genuine by Kraw
 // The first patch of problem `trial` of the random sweep with seed `seed`: problems 0-3 are (2,2), 4-7 (3,2), the
 // rational ones 2, 3, 6, 7; the sweep draws two patches per problem (the second is the partner of a pair).
 static Patch sweep_patch(int seed, int trial) {
-  std::mt19937 g(std::mt19937::result_type(seed));
+  std::mt19937 g(static_cast<std::mt19937::result_type>(seed));
   for (int t = 0;; ++t) {
     Patch a = random_patch(g, 2 + t / 4, 2, t % 4 >= 2);
     random_patch(g, 2 + t / 4, 2, t % 4 >= 2);
