@@ -816,12 +816,56 @@ TEST_CASE("two branches close together between two nodes are certified by the tw
   // to be thinner than the gap all along it, and the subdivision spent its 20000 boxes; boxes that hold both branches
   // are now resolved whole (internal/two_branch_box.h).
   Surface_intersection_options o;
-  o.certify_lifting = false;
   o.pinch_point_boxes = 0;
   o.max_total_degree_for_topology = 0;  // the subdivision only
-  const Surface_locus L = self_intersection_locus(sweep_patch(6, 4), o);
+  const Patch a = sweep_patch(6, 4);
+  const Surface_locus L = self_intersection_locus(a, o);
   INFO(L.note);
   REQUIRE(L.topology_method == "subdivision");
+  // The lifting proves statuses on the arcs of two-branch cells by a chain from one crossing (pieces with
+  // graph_axis -1 whose ends are both crossings, not a singular point). Each point proved genuine there must be a
+  // double point of the patch: with (l, k) inside the proved partner box, Phi(u, v + k) = Phi(u + l, v), both
+  // parameter points in [0, 1]^2 (checked by evaluating the patch, not by the lifting's equations).
+  std::vector<std::array<double, 2>> singular;
+  for (const Curve_topology_vertex& x : L.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) singular.push_back({x.u, x.v});
+  auto is_singular = [&](const std::array<double, 2>& p) {
+    for (const auto& q : singular)
+      if (std::fabs(p[0] - q[0]) < 1e-12 && std::fabs(p[1] - q[1]) < 1e-12) return true;
+    return false;
+  };
+  std::size_t two_branch_proved = 0, tight = 0;
+  REQUIRE(L.arcs.size() == L.topology.edges.size());
+  for (std::size_t k = 0; k < L.arcs.size(); ++k) {
+    const Curve_topology_edge& e = L.topology.edges[k];
+    REQUIRE(L.arcs[k].points.size() == e.polyline.size());
+    for (const Curve_topology_piece& pc : e.pieces) {
+      if (pc.graph_axis != -1 || is_singular(e.polyline[pc.first]) || is_singular(e.polyline[pc.last])) continue;
+      for (std::size_t i = pc.first + 1; i < pc.last; ++i) {
+        const Locus_point& q = L.arcs[k].points[i];
+        if (!(q.status_proved && q.genuine)) continue;
+        ++two_branch_proved;
+        const double u = q.projection[0], v = q.projection[1];
+        const double l = 0.5 * (q.partner_enclosure[0][0] + q.partner_enclosure[0][1]),
+                     kk = 0.5 * (q.partner_enclosure[1][0] + q.partner_enclosure[1][1]);
+        // the midpoint is within half the box's widths of the exact partner; |dPhi| <= 3 * 10 per parameter
+        // (control points in [-5, 5], degree <= 3)
+        const double w = q.partner_enclosure[0][1] - q.partner_enclosure[0][0] + q.partner_enclosure[1][1] -
+                         q.partner_enclosure[1][0];
+        tight += w < 1e-6;
+        CHECK(v + kk >= -1e-9);
+        CHECK(v + kk <= 1 + 1e-9);
+        CHECK(u + l >= -1e-9);
+        CHECK(u + l <= 1 + 1e-9);
+        const auto P = a(Q(u), Q(v + kk)), R = a(Q(u + l), Q(v));
+        double d = 0;
+        for (int c = 0; c < 3; ++c) d = std::max(d, std::fabs(CGAL::to_double(P[c] - R[c])));
+        CHECK(d < 1e-7 + 30 * w);
+      }
+    }
+  }
+  CHECK(two_branch_proved > 100);
+  CHECK(tight >= two_branch_proved * 9 / 10);
   const double node[2][2] = {{0.9382, 0.9376}, {0.8726, 0.8318}};
   for (const auto& p : node) {
     int found = 0;
