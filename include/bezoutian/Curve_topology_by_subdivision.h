@@ -930,9 +930,16 @@ class Subdivision_topology {
   // A box with two branches (two_branch_certificate): the crossings of each class sigma D_y < 0, sigma D_y > 0, sorted
   // along x, pair up into arcs, as in a simple box. Each arc starts at (n0) the end that lies on a line x = const
   // when there is one: the lifting's chained proof runs from n0 along x (certify_half_branch).
-  bool resolve_two_branches(const Box& B) {
+  bool resolve_two_branches(Box& B) {
     std::size_t strips = 0;  // strip grids computed, each about as costly as one double split of B: the budget
-    const Two_branch_box t = two_branch_certificate(*B.fast, 4, &strips, o_.two_branch_max_gap);
+    Two_branch_box t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
+    // the screen passed but the proof failed: near a node whose branches cross at a small angle, sigma D on the
+    // segments is below the radius of a double grid split down from the domain; the double-double restriction
+    // of the domain's grid is sharper (to the double rounding of its midpoints)
+    if (t.axis < 0 && t.screened && dd_root_ && !B.grid && B.fast->radius() > std::ldexp(B.fast->max_abs(), -48)) {
+      B.fast = double_double_grid(B);
+      t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
+    }
     work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
     if (t.axis < 0) return false;
     for (const Rational* cu : {&B.u0, &B.u1})  // the curve through a domain corner: not handled here
@@ -1225,9 +1232,8 @@ class Subdivision_topology {
     std::vector<long double> L(std::size_t(a_ + 1) * (b_ + 1));
     for (int i = 0; i <= a_; ++i)
       for (int j = 0; j <= b_; ++j) L[std::size_t(i) * (b_ + 1) + j] = B.fast->at(i, j);
-    long double x = 0.5L, y = 0.5L;
-    bool converged = false;
-    for (int it = 0; it < 60 && !converged; ++it) {
+    long double x = 0.5L, y = 0.5L, step = 1;
+    for (int it = 0; it < 60 && step >= 1e-18L; ++it) {
       const auto j = local_jet(L, x, y);
       const long double dt = j[3] * j[5] - j[4] * j[4];
       if (!(std::fabs(dt) > 0)) return false;
@@ -1235,8 +1241,11 @@ class Subdivision_topology {
       x -= dx;
       y -= dy;
       if (!std::isfinite(double(x)) || !std::isfinite(double(y)) || x < -1 || x > 2 || y < -1 || y > 2) return false;
-      converged = std::fabs(dx) + std::fabs(dy) < 1e-18L;
+      step = std::fabs(dx) + std::fabs(dy);
     }
+    // converged, up to the double grid's rounding: near a node whose branches cross at a small angle that rounding
+    // moves the critical point by far more than 1e-18 (its radius over the smallest eigenvalue of the Hessian)
+    const bool converged = step < 1e-9L;
     const long double margin = 1e-6L;
     if (x < margin || x > 1 - margin || y < margin || y > 1 - margin) return false;
     const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
@@ -1287,20 +1296,33 @@ class Subdivision_topology {
     bool witness_failed = false;
     for (int pass = cheap ? 0 : 1; pass < 2; ++pass) {
       const Interval_grid& g = pass == 0 ? *cheap : mpfi_grid(B);
-      const double r0 = 1e-7;
-      std::array<I, 2> X{I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
-                         I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
+      std::array<I, 2> X{I::point(0, prec_), I::point(0, prec_)};
       auto value = [&](const std::array<I, 2>& c, std::array<I, 2>& F) {
         F[0] = grid_value(g, 1, 0, c[0], c[1]);
         F[1] = grid_value(g, 0, 1, c[0], c[1]);
       };
+      // The Hessian on Z in mean-value form, H(c) + (third derivatives on Z) (Z - c). Evaluated on Z directly, a
+      // Bernstein sum overestimates by (size of its coefficients) x (width of Z), which can exceed the smallest
+      // eigenvalue of H (a node whose branches cross at a small angle t: about t^2 |H|); the mean-value form's
+      // excess is quadratic in the width of Z.
       auto jacobian = [&](const std::array<I, 2>& Z, std::vector<std::vector<I>>& J) {
-        J[0][0] = grid_value(g, 2, 0, Z[0], Z[1]);
-        J[0][1] = grid_value(g, 1, 1, Z[0], Z[1]);
+        const I c0 = Z[0].midpoint(), c1 = Z[1].midpoint(), d0 = Z[0] - c0, d1 = Z[1] - c1;
+        const I t30 = grid_value(g, 3, 0, Z[0], Z[1]), t21 = grid_value(g, 2, 1, Z[0], Z[1]),
+                t12 = grid_value(g, 1, 2, Z[0], Z[1]), t03 = grid_value(g, 0, 3, Z[0], Z[1]);
+        J[0][0] = grid_value(g, 2, 0, c0, c1) + t30 * d0 + t21 * d1;
+        J[0][1] = grid_value(g, 1, 1, c0, c1) + t21 * d0 + t12 * d1;
         J[1][0] = J[0][1];
-        J[1][1] = grid_value(g, 0, 2, Z[0], Z[1]);
+        J[1][1] = grid_value(g, 0, 2, c0, c1) + t12 * d0 + t03 * d1;
       };
-      if (!krawczyk_prove<2>(X, value, jacobian)) {
+      // Krawczyk's first box: radius 1e-7 (local coordinates), inflated when the critical point's own uncertainty
+      // (the gradient's rounding error over the smallest eigenvalue of H) is larger
+      bool proved = false;
+      for (const double r0 : {1e-7, 1e-5, 1e-3}) {
+        X = {I::hull(Rational(double(x) - r0), Rational(double(x) + r0), prec_),
+             I::hull(Rational(double(y) - r0), Rational(double(y) + r0), prec_)};
+        if ((proved = krawczyk_prove<2>(X, value, jacobian))) break;
+      }
+      if (!proved) {
         if (pass == 0) continue;
         return false;
       }
@@ -1892,6 +1914,9 @@ class Subdivision_topology {
   // From this depth on, a box that holds a critical point of D next to the curve and is not resolved is cut around
   // it (resolve_singular sets cut_point_, the main loop cuts).
   static constexpr int cut_depth = 10;
+  // cuts of a box's x-range in the two-branch fold test (two_branch::no_fold; halvings, or window cuts where the
+  // minimiser leaves the box)
+  static constexpr int two_branch_strip_depth = 4;
   std::size_t two_branch_boxes_ = 0;
   // per line (vertical, c): the derivative of D along it and across it, restricted to it
   std::map<std::pair<bool, Rational>, std::pair<Polynomial_1<Rational>, Polynomial_1<Rational>>> restrictions_;

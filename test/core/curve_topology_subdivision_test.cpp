@@ -577,3 +577,45 @@ TEST_CASE("subdivision: two branches close together (a thin loop, a pair of near
     }
   check_samples(nodes, r.topology, 1e-9);
 }
+
+TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "[topology][subdivision][two_branch]") {
+  // The same two nodes (1/3, 13/36) and (2/3, 19/36), now joined by w = +-2^-14 (3u-1)(3u-2): the branches cross
+  // there at 2 * 3 * 2^-14 / 4 = 9.2e-5 rad (slopes dv/du). The Hessian's determinant at a node is about 2^-28 of
+  // |H|^2 and changes sign a few 1e-9 from it; next to a node the two branches are 9.2e-5 times the distance to it
+  // apart.
+  // Needed: Krawczyk's Jacobian in mean-value form, a Krawczyk box larger than the critical point's rounding
+  // uncertainty, cuts that keep the node inside its box, and the two-branch fold test cut where the minimiser leaves
+  // the box (before: not certified from about 3e-3 rad on).
+  const P2 w = 4 * v - 1 - u - u * u;
+  const P2 nodes = CGAL::ipower(P2(2), 28) * w * w - (3 * u - 1) * (3 * u - 1) * (3 * u - 2) * (3 * u - 2);
+  auto r = subdivide_curve_in_box(nodes, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.two_branch_boxes > 0);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 0);
+  CHECK(r.topology.number_of_boundary_points() == 4);
+  CHECK(r.topology.edges.size() == 6);
+  REQUIRE(r.topology.number_of_singular_points() == 2);
+  for (const auto& x : r.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.branches == 2);
+      const bool first = x.u < 0.5;
+      const double pu = first ? 1.0 / 3 : 2.0 / 3, pv = first ? 13.0 / 36 : 19.0 / 36;
+      CHECK(x.u_lo <= pu);
+      CHECK(pu <= x.u_hi);
+      CHECK(x.v_lo <= pv);
+      CHECK(pv <= x.v_hi);
+    }
+  check_samples(nodes, r.topology, 1e-9);
+  // every sample lies on one of the two branches, and both are traced between the nodes
+  std::size_t above = 0, below = 0;
+  for (const auto& e : r.topology.edges)
+    for (const auto& p : e.polyline) {
+      const double W = 4 * p[1] - 1 - p[0] - p[0] * p[0], half = std::ldexp(std::fabs((3 * p[0] - 1) * (3 * p[0] - 2)), -14);
+      CHECK(std::fabs(std::fabs(W) - half) < 1e-9);
+      if (p[0] > 0.4 && p[0] < 0.6) (W > 0 ? above : below) += 1;
+    }
+  CHECK(above > 0);
+  CHECK(below > 0);
+}

@@ -9,7 +9,8 @@
 //      sigma D_y > 0.
 //  (2) No fold: no point of the closed box with D = D_y = 0. At such a point sigma D would reach its minimum 0 on
 //      that line, so it suffices that on each line x = const either D_y or D has no zero, or sigma D takes a
-//      negative value. The x-range is cut into pieces X (halving); on each, the Bernstein coefficients of D on the
+//      negative value. The x-range is cut into pieces X (halving, or in the window where the minimiser of sigma D
+//      leaves the box: window_cut); on each, the Bernstein coefficients of D on the
 //      strip X x [0, 1] prove D_y != 0 (differences in y of one strict sign) or D != 0 (one strict sign), or those
 //      of D restricted to a segment across the strip (from the minimiser of sigma D on the strip's left edge to the
 //      one on its right edge, a segment inside the box over all of X) all have the sign -sigma.
@@ -31,6 +32,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace bezoutian {
@@ -42,6 +44,9 @@ struct Two_branch_box {
   int axis = -1;
   int sigma = 0;
   double gap = 1;  ///< floating point: the distance between the two branches across the box (branch_gap)
+  /// nothing proved, but the plain-double screen passed for some axis: the proof failed on the grid's radius,
+  /// and a sharper grid of the same box may succeed
+  bool screened = false;
 };
 
 namespace two_branch {
@@ -93,24 +98,38 @@ void restrict_to(std::vector<T>& w, double lo, double hi) {
   w = c;
 }
 
+// sum_j c_j B_j(t), Bernstein basis of degree c.size() - 1 (de Casteljau; floating point, for policies only).
+inline double bernstein_at(const std::vector<double>& c, double t, std::vector<double>& w) {
+  w.assign(c.begin(), c.end());
+  for (std::size_t r = 1; r < w.size(); ++r)
+    for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
+  return w.empty() ? 0 : w[0];
+}
+
+// A root of sum_j c_j B_j on [a, b] by bisection when the values at a and b have strict opposite signs, else NaN.
+inline double bernstein_root(const std::vector<double>& c, double a, double b, int iterations) {
+  std::vector<double> w;
+  const double fa = bernstein_at(c, a, w), fb = bernstein_at(c, b, w);
+  if (!(fa * fb < 0)) return std::numeric_limits<double>::quiet_NaN();
+  for (int it = 0; it < iterations; ++it) {
+    const double m = 0.5 * (a + b);
+    ((bernstein_at(c, m, w) < 0) == (fa < 0) ? a : b) = m;
+  }
+  return 0.5 * (a + b);
+}
+
 // The point of [0, 1] where sigma P is least, P(y) = sum_j c_j B_j(y) strictly convex times sigma (floating point: it
 // only chooses a segment, whose coefficients are then proved).
 inline double minimiser(const std::vector<double>& c, int sigma, int iterations = 55) {
   const std::size_t n = c.size() - 1;
-  std::vector<double> d(n), w(n);
+  std::vector<double> d(n), w;
   for (std::size_t j = 0; j < n; ++j) d[j] = sigma * (c[j + 1] - c[j]);
   if (d[0] >= 0) return 0;
   if (d[n - 1] <= 0) return 1;
-  auto value = [&](double t) {
-    std::copy(d.begin(), d.end(), w.begin());
-    for (std::size_t r = 1; r < n; ++r)
-      for (std::size_t k = 0; k + r < n; ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
-    return w[0];
-  };
   double a = 0, b = 1;
   for (int it = 0; it < iterations && b - a > 1e-16; ++it) {
     const double m = 0.5 * (a + b);
-    (value(m) < 0 ? a : b) = m;
+    (bernstein_at(d, m, w) < 0 ? a : b) = m;
   }
   return 0.5 * (a + b);
 }
@@ -153,6 +172,32 @@ std::vector<T> binomials(int n) {
   return c;
 }
 
+// Where to cut a strip whose tests failed, in its local coordinate x in (0, 1) (floating point: a policy, the pieces
+// are then proved). The midpoint, unless the minimiser of sigma D lies on the box's edge y = e (e = 0 or 1) at one
+// end of the strip and inside the box at the other. Between the point where a branch leaves the box through y = e
+// (D = 0 there) and the point where the minimiser reaches that edge (D_y = 0 there), lines on the near side carry
+// D_y != 0 in the whole box and lines on the far side a negative value of sigma D next to y = e, so a cut in that
+// window lets both halves pass. The window is about (gap between the branches) / (their slope) wide: halving
+// would find it only after many steps.
+template <class N>
+double window_cut(const Grid<N>& T, int sigma, double y_left, double y_right) {
+  const bool cl = y_left == 0 || y_left == 1, cr = y_right == 0 || y_right == 1;
+  if (cl == cr || T.ny < 1) return 0.5;
+  const double e = cl ? y_left : y_right, end = cl ? 0 : 1;
+  std::vector<double> val(std::size_t(T.nx + 1)), dy(val.size());
+  for (int i = 0; i <= T.nx; ++i) {
+    const int j = e == 0 ? 0 : T.ny;
+    val[std::size_t(i)] = sigma * middle(T.at(i, j));
+    dy[std::size_t(i)] = e == 0 ? middle(T.at(i, 1)) - middle(T.at(i, 0)) : middle(T.at(i, T.ny)) - middle(T.at(i, T.ny - 1));
+  }
+  const double x_min = bernstein_root(dy, 0, 1, 50);  // the minimiser reaches y = e
+  if (!(x_min > 0 && x_min < 1)) return 0.5;
+  const double x_exit = bernstein_root(val, end, x_min, 50);  // a branch leaves through y = e
+  if (!(x_exit >= 0 && x_exit <= 1)) return 0.5;
+  const double cut = 0.5 * (x_min + x_exit);
+  return cut > 1e-9 && cut < 1 - 1e-9 ? cut : 0.5;
+}
+
 // True if every line x = const of the strip [xa, xb] x [0, 1] (in the box's local coordinates) carries no point with
 // D = D_y = 0: by one of the three tests of the header comment, on halves of the strip down to `max_depth` halvings.
 // `strips` counts the strip grids computed (the work).
@@ -180,7 +225,8 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     // the segment between the minimisers of sigma D on the strip's two edges x = xa and x = xb
     std::vector<double> left(std::size_t(S.ny + 1)), right(std::size_t(S.ny + 1));
     for (int j = 0; j <= S.ny; ++j) left[std::size_t(j)] = middle(T.at(0, j)), right[std::size_t(j)] = middle(T.at(S.nx, j));
-    double ya = minimiser(left, sigma), yb = minimiser(right, sigma);
+    const double y_left = minimiser(left, sigma), y_right = minimiser(right, sigma);
+    double ya = y_left, yb = y_right;
     const bool reversed = ya > yb;  // then run x backwards, so that the segment rises from ya to yb
     if (reversed) std::swap(ya, yb);
     // g_k = sum_{p+q=k} C(nx,p) C(ny,q) r_pq, r_p. the coefficients of row p restricted to [ya, yb]: C(nx+ny, k)
@@ -197,7 +243,7 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
     if (negative) continue;
     if (p.depth >= max_depth) return false;
-    const double m = 0.5 * (p.xa + p.xb);
+    const double m = p.xa + window_cut(T, sigma, y_left, y_right) * (p.xb - p.xa);
     todo.push_back({m, p.xb, p.depth + 1});
     todo.push_back({p.xa, m, p.depth + 1});
   }
@@ -208,13 +254,8 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
 // y, between the two zeros of D on the lines x = 1/4, 1/2, 3/4 that have two; 1 if none has.
 inline double branch_gap(const Grid<double>& M, int sigma) {
   double gap = 1;
-  std::vector<double> basis(std::size_t(M.nx + 1)), c(std::size_t(M.ny + 1)), w(c.size());
-  auto value = [&](double t) {
-    std::copy(c.begin(), c.end(), w.begin());
-    for (std::size_t r = 1; r < w.size(); ++r)
-      for (std::size_t k = 0; k + r < w.size(); ++k) w[k] = (1 - t) * w[k] + t * w[k + 1];
-    return sigma * w[0];
-  };
+  std::vector<double> basis(std::size_t(M.nx + 1)), c(std::size_t(M.ny + 1)), w;
+  auto value = [&](double t) { return sigma * bernstein_at(c, t, w); };
   auto root = [&](double a, double b) {  // sigma D > 0 at a, < 0 at b (or the reverse): bisection
     const bool rising = value(a) < 0;
     for (int it = 0; it < 24; ++it) {  // a few digits: a policy, not a proof
@@ -251,6 +292,7 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
                                              std::size_t* strips = nullptr, double max_gap = 1) {
   const double rho = G.radius();
   std::size_t work = 0;
+  bool screened = false;
   for (int axis = 0; axis < 2; ++axis) {
     const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
     if (ny < 2) continue;
@@ -264,6 +306,7 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
     const double gap = max_gap < 1 ? two_branch::branch_gap(M, sigma) : 0;
     if (!(gap < max_gap)) continue;
     if (!two_branch::no_fold(M, sigma, max_depth, work)) continue;  // the midpoints alone fail: no proof
+    screened = true;
     two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
     for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
     std::size_t proof = 0;
@@ -275,7 +318,9 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
     }
   }
   if (strips) *strips += work;
-  return Two_branch_box{};
+  Two_branch_box none;
+  none.screened = screened;
+  return none;
 }
 
 }  // namespace internal
