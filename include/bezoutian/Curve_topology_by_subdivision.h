@@ -154,6 +154,7 @@ struct Subdivision_topology_result {
   std::size_t boxes = 0;                  ///< boxes examined
   std::string reason;                     ///< why not certified
   std::size_t two_branch_boxes = 0;       ///< leaf boxes resolved by the two-branch certificate
+  std::size_t valley_boxes = 0;           ///< boxes excluded as a valley of D above (or below) 0
 };
 
 namespace internal {
@@ -259,6 +260,7 @@ class Subdivision_topology {
         if (m >= 0 && resolve_multiple(B, std::size_t(m))) continue;
         if (!failed_ && resolve_singular(B)) continue;
         if (!failed_ && m < 0 && B.depth >= o_.two_branch_depth && resolve_two_branches(B)) continue;
+        if (!failed_ && m < 0 && B.depth >= o_.two_branch_depth && valley_excluded(B)) continue;
         if (!failed_ && m < 0 && B.depth >= rational_multiple_depth) {  // a multiple point at a small rational?
           const int r = rational_multiple_point(B);
           if (r >= 0 && resolve_multiple(B, std::size_t(r))) continue;
@@ -290,6 +292,7 @@ class Subdivision_topology {
     }
     res.certified = true;
     res.two_branch_boxes = two_branch_boxes_;
+    res.valley_boxes = valley_boxes_;
     return res;
   }
 
@@ -979,6 +982,21 @@ class Subdivision_topology {
     }
     ++two_branch_boxes_;
     return true;
+  }
+
+  // A box excluded as a valley of sigma D above 0 (valley_exclusion): no arcs. Retried on the double-double grid
+  // when only the radius failed, as in resolve_two_branches.
+  bool valley_excluded(Box& B) {
+    std::size_t strips = 0;
+    bool screened = false;
+    bool ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, &screened);
+    if (!ok && screened && dd_root_ && !B.grid && B.fast->radius() > std::ldexp(B.fast->max_abs(), -48)) {
+      B.fast = double_double_grid(B);
+      ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, nullptr);
+    }
+    work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+    if (ok) ++valley_boxes_;
+    return ok;
   }
 
   // ---- singular and isolated points (see the header comment) ----
@@ -1917,7 +1935,11 @@ class Subdivision_topology {
   // cuts of a box's x-range in the two-branch fold test (two_branch::no_fold; halvings, or window cuts where the
   // minimiser leaves the box)
   static constexpr int two_branch_strip_depth = 4;
+  // halvings of a box's x-range in the valley exclusion (two_branch::no_zero): the segments must follow the floor
+  // of a valley to within its width (about sqrt(min D / D_yy)), which a chord does on strips about that wide
+  static constexpr int valley_strip_depth = 8;
   std::size_t two_branch_boxes_ = 0;
+  std::size_t valley_boxes_ = 0;
   // per line (vertical, c): the derivative of D along it and across it, restricted to it
   std::map<std::pair<bool, Rational>, std::pair<Polynomial_1<Rational>, Polynomial_1<Rational>>> restrictions_;
   bool cut_pending_ = false;

@@ -578,6 +578,46 @@ TEST_CASE("subdivision: two branches close together (a thin loop, a pair of near
   check_samples(nodes, r.topology, 1e-9);
 }
 
+TEST_CASE("subdivision: a loop of width 2^-13 and a near miss 2^-22 deep are certified (valleys of D excluded)",
+          "[topology][subdivision][two_branch][valley]") {
+  // Beyond the tips u = 1/4, 3/4 of the loop 2^28 w^2 = 1 - 4 (2u - 1)^2 (w = 4v - 1 - u - u^2, |w| <= 2^-14) the two
+  // branches become a complex pair, and D is small and positive along the parabola w = 0: plain sign tests need
+  // boxes about sqrt(min D / D_vv) wide there, and the subdivision spent its 20000 boxes from width 2^-10 on.
+  const P2 w = 4 * v - 1 - u - u * u;
+  const P2 loop = CGAL::ipower(P2(2), 28) * w * w - 1 + 4 * (2 * u - 1) * (2 * u - 1);
+  auto r = subdivide_curve_in_box(loop, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.valley_boxes > 0);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 1);
+  CHECK(r.topology.number_of_singular_points() == 0);
+  CHECK(r.topology.number_of_boundary_points() == 0);
+  check_samples(loop, r.topology, 1e-9);
+  double lo = 1, hi = 0;
+  std::size_t above = 0, below = 0;
+  for (const auto& e : r.topology.edges)
+    for (const auto& p : e.polyline) {
+      const double x = p[0], W = 4 * p[1] - 1 - x - x * x, half = std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * x - 1) * (2 * x - 1))), -14);
+      CHECK(std::fabs(std::fabs(W) - half) < 1e-9);  // on one of the two branches
+      (W > 0 ? above : below) += std::fabs(x - 0.5) < 0.2;
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+  CHECK(above > 10);
+  CHECK(below > 10);
+  CHECK(lo < 0.2501);
+  CHECK(hi > 0.7499);
+  // A near miss: D = 2^44 w^2 + 1 + u^2 >= 1 has no real zero, but its valley along w = 0 is 2^-44 of its
+  // coefficients deep (two surfaces that pass close without meeting). Proved empty.
+  const P2 miss = CGAL::ipower(P2(2), 44) * w * w + 1 + u * u;
+  r = subdivide_curve_in_box(miss, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.valley_boxes > 0);
+  CHECK(r.topology.components.empty());
+  CHECK(r.topology.edges.empty());
+}
+
 TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "[topology][subdivision][two_branch]") {
   // The same two nodes (1/3, 13/36) and (2/3, 19/36), now joined by w = +-2^-14 (3u-1)(3u-2): the branches cross
   // there at 2 * 3 * 2^-14 / 4 = 9.2e-5 rad (slopes dv/du). The Hessian's determinant at a node is about 2^-28 of

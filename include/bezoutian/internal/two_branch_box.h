@@ -198,6 +198,42 @@ double window_cut(const Grid<N>& T, int sigma, double y_left, double y_right) {
   return cut > 1e-9 && cut < 1 - 1e-9 ? cut : 0.5;
 }
 
+// The strip's grid T: the columns (j fixed) of the box's grid S restricted to [xa, xb].
+template <class N>
+void strip_grid(const Grid<N>& S, double xa, double xb, Grid<N>& T, std::vector<N>& w) {
+  for (int j = 0; j <= S.ny; ++j) {
+    w.resize(std::size_t(S.nx + 1));
+    for (int i = 0; i <= S.nx; ++i) w[std::size_t(i)] = S.at(i, j);
+    restrict_to(w, xa, xb);
+    for (int i = 0; i <= S.nx; ++i) T.at(i, j) = w[std::size_t(i)];
+  }
+}
+
+// The segment from (0, ya) to (1, yb) across the strip (reversed: from (1, ya) to (0, yb)), ya <= yb:
+// g_k = sum_{p+q=k} C(nx,p) C(ny,q) r_pq, r_p. the coefficients of row p of T restricted to [ya, yb], is
+// C(nx+ny, k) times the k-th Bernstein coefficient of the polynomial of T on the segment. cx, cy: binomials.
+template <class N>
+std::vector<N> on_segment(const Grid<N>& T, double ya, double yb, bool reversed, const std::vector<N>& cx,
+                          const std::vector<N>& cy, std::vector<N>& w) {
+  std::vector<N> g(std::size_t(T.nx + T.ny + 1), constant(N{}, 0));
+  for (int i = 0; i <= T.nx; ++i) {
+    const int row = reversed ? T.nx - i : i;
+    w.resize(std::size_t(T.ny + 1));
+    for (int j = 0; j <= T.ny; ++j) w[std::size_t(j)] = T.at(row, j);
+    restrict_to(w, ya, yb);
+    for (int q = 0; q <= T.ny; ++q) g[std::size_t(i + q)] = g[std::size_t(i + q)] + cx[std::size_t(i)] * cy[std::size_t(q)] * w[std::size_t(q)];
+  }
+  return g;
+}
+
+// The minimisers of sigma D on the strip's two edges x = 0 and x = 1 (floating point).
+template <class N>
+std::pair<double, double> edge_minimisers(const Grid<N>& T, int sigma) {
+  std::vector<double> left(std::size_t(T.ny + 1)), right(std::size_t(T.ny + 1));
+  for (int j = 0; j <= T.ny; ++j) left[std::size_t(j)] = middle(T.at(0, j)), right[std::size_t(j)] = middle(T.at(T.nx, j));
+  return {minimiser(left, sigma), minimiser(right, sigma)};
+}
+
 // True if every line x = const of the strip [xa, xb] x [0, 1] (in the box's local coordinates) carries no point with
 // D = D_y = 0: by one of the three tests of the header comment, on halves of the strip down to `max_depth` halvings.
 // `strips` counts the strip grids computed (the work).
@@ -215,30 +251,12 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     const Piece p = todo.back();
     todo.pop_back();
     ++strips;
-    for (int j = 0; j <= S.ny; ++j) {  // the strip's grid: each column restricted to [xa, xb]
-      w.resize(std::size_t(S.nx + 1));
-      for (int i = 0; i <= S.nx; ++i) w[std::size_t(i)] = S.at(i, j);
-      restrict_to(w, p.xa, p.xb);
-      for (int i = 0; i <= S.nx; ++i) T.at(i, j) = w[std::size_t(i)];
-    }
+    strip_grid(S, p.xa, p.xb, T, w);
     if (difference_sign_y(T) != 0 || common_sign(T) != 0) continue;
     // the segment between the minimisers of sigma D on the strip's two edges x = xa and x = xb
-    std::vector<double> left(std::size_t(S.ny + 1)), right(std::size_t(S.ny + 1));
-    for (int j = 0; j <= S.ny; ++j) left[std::size_t(j)] = middle(T.at(0, j)), right[std::size_t(j)] = middle(T.at(S.nx, j));
-    const double y_left = minimiser(left, sigma), y_right = minimiser(right, sigma);
-    double ya = y_left, yb = y_right;
-    const bool reversed = ya > yb;  // then run x backwards, so that the segment rises from ya to yb
-    if (reversed) std::swap(ya, yb);
-    // g_k = sum_{p+q=k} C(nx,p) C(ny,q) r_pq, r_p. the coefficients of row p restricted to [ya, yb]: C(nx+ny, k)
-    // times the Bernstein coefficients of D on the segment
-    std::vector<N> g(std::size_t(S.nx + S.ny + 1), constant(N{}, 0));
-    for (int i = 0; i <= S.nx; ++i) {
-      const int row = reversed ? S.nx - i : i;
-      w.resize(std::size_t(S.ny + 1));
-      for (int j = 0; j <= S.ny; ++j) w[std::size_t(j)] = T.at(row, j);
-      restrict_to(w, ya, yb);
-      for (int q = 0; q <= S.ny; ++q) g[std::size_t(i + q)] = g[std::size_t(i + q)] + cx[std::size_t(i)] * cy[std::size_t(q)] * w[std::size_t(q)];
-    }
+    const auto [y_left, y_right] = edge_minimisers(T, sigma);
+    const bool reversed = y_left > y_right;  // then run x backwards, so that the segment rises
+    const std::vector<N> g = on_segment(T, std::min(y_left, y_right), std::max(y_left, y_right), reversed, cx, cy, w);
     bool negative = true;  // sigma D < 0 on the segment
     for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
     if (negative) continue;
@@ -250,11 +268,90 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   return true;
 }
 
+inline double quotient(double a, double c) { return a / c; }
+// a / c for c > 0, outward rounded
+inline I quotient(const I& a, const I& c) {
+  const double q[4] = {a.lo / c.lo, a.lo / c.hi, a.hi / c.lo, a.hi / c.hi};
+  return I::widen(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
+}
+
+// True if D has no zero in the closed box (sigma D_yy > 0 there: the caller's test). On each piece X of the x-range
+// (halving), D has one strict sign on the strip X x [0, 1], or the strip is a valley of sigma D above 0: with
+// L > 0 a lower bound of sigma D_yy on the strip and (x, y0(x)) a segment across it, on each line x
+//   sigma D(x, y) >= sigma D(x, y0) + sigma D_y(x, y0) (y - y0) + L/2 (y - y0)^2 >= sigma D(x, y0) - D_y(x, y0)^2 / (2L),
+// and the Bernstein coefficients on the segment bound sigma D(x, y0) from below and |D_y(x, y0)| from above. The
+// segment joins the minimisers of sigma D on the strip's edges; the bound needs it within about the valley's
+// width of the valley's floor, so strips are halved down to `max_depth` times.
+// Two branches that become a complex pair (beyond the tips of a thin loop, a near miss of two surfaces) leave
+// such a valley, where D is small and positive: a plain sign test needs boxes about sqrt(min D / D_yy) wide there.
+template <class N>
+bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
+  if (S.ny < 2) return false;
+  struct Piece {
+    double xa, xb;
+    int depth;
+  };
+  const int nx = S.nx, ny = S.ny;
+  const std::vector<N> cx = binomials<N>(nx), cy = binomials<N>(ny), cy1 = binomials<N>(ny - 1),
+                       cs = binomials<N>(nx + ny), cs1 = binomials<N>(nx + ny - 1);
+  std::vector<Piece> todo{{0, 1, 0}};
+  Grid<N> T{nx, ny, std::vector<N>(S.v.size())}, Ty{nx, ny - 1, std::vector<N>(std::size_t(nx + 1) * ny)};
+  std::vector<N> w;
+  const N s = constant(N{}, double(sigma));
+  while (!todo.empty()) {
+    const Piece p = todo.back();
+    todo.pop_back();
+    ++strips;
+    strip_grid(S, p.xa, p.xb, T, w);
+    if (common_sign(T) != 0) continue;
+    double least = HUGE_VAL;  // the least sigma-second difference in y on the strip: L = ny (ny - 1) least
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j + 2 <= ny; ++j) least = std::min(least, lower(s * (T.at(i, j + 2) - T.at(i, j + 1) - T.at(i, j + 1) + T.at(i, j))));
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j < ny; ++j) Ty.at(i, j) = T.at(i, j + 1) - T.at(i, j);  // D_y = ny x (this grid)
+    const auto [y_left, y_right] = edge_minimisers(T, sigma);
+    const bool reversed = y_left > y_right;
+    const double ya = std::min(y_left, y_right), yb = std::max(y_left, y_right);
+    const std::vector<N> g = on_segment(T, ya, yb, reversed, cx, cy, w), h = on_segment(Ty, ya, yb, reversed, cx, cy1, w);
+    // sigma D >= low and (the part of sigma D_y that counts) / ny <= high on the segment. A segment on the edge
+    // y = 0 (both minimisers there) counts only sigma D_y < 0 (y - y0 >= 0, so a positive slope only raises the
+    // bound), one on the edge y = 1 only sigma D_y > 0.
+    const int side = ya == 0 && yb == 0 ? -1 : (ya == 1 && yb == 1 ? 1 : 0);
+    double low = HUGE_VAL, high = 0;
+    for (std::size_t k = 0; k < g.size(); ++k) low = std::min(low, lower(quotient(s * g[k], cs[k])));
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      const N q = quotient(s * h[k], cs1[k]);
+      high = std::max(high, side < 0 ? -lower(q) : (side > 0 ? upper(q) : std::max(-lower(q), upper(q))));
+    }
+    if (least > 0 && low > 0) {
+      // 2 L low - (ny high)^2 > 0, with L = ny (ny - 1) least
+      const N L = constant(N{}, least) * constant(N{}, double(ny) * (ny - 1)), H = constant(N{}, high) * constant(N{}, double(ny));
+      if (lower(constant(N{}, 2) * L * constant(N{}, low) - H * H) > 0) continue;
+    }
+    if (p.depth >= max_depth) return false;
+    const double m = 0.5 * (p.xa + p.xb);
+    todo.push_back({m, p.xb, p.depth + 1});
+    todo.push_back({p.xa, m, p.depth + 1});
+  }
+  return true;
+}
+
+// The coefficients c (in y) of D on the line x = const of the grid M (floating point).
+inline void line_at(const Grid<double>& M, double x, std::vector<double>& basis, std::vector<double>& c) {
+  basis.assign(std::size_t(M.nx + 1), 0.0);  // the Bernstein basis at x, by de Casteljau's recurrence
+  basis[0] = 1;
+  for (int d = 1; d <= M.nx; ++d)
+    for (int k = d; k >= 0; --k) basis[std::size_t(k)] = (1 - x) * basis[std::size_t(k)] + (k > 0 ? x * basis[std::size_t(k - 1)] : 0);
+  c.assign(std::size_t(M.ny + 1), 0.0);
+  for (int j = 0; j <= M.ny; ++j)
+    for (int i = 0; i <= M.nx; ++i) c[std::size_t(j)] += basis[std::size_t(i)] * M.at(i, j);
+}
+
 // Floating point, for the caller's policy (no proof rests on it): the least distance, in the box's local coordinate
 // y, between the two zeros of D on the lines x = 1/4, 1/2, 3/4 that have two; 1 if none has.
 inline double branch_gap(const Grid<double>& M, int sigma) {
   double gap = 1;
-  std::vector<double> basis(std::size_t(M.nx + 1)), c(std::size_t(M.ny + 1)), w;
+  std::vector<double> basis, c, w;
   auto value = [&](double t) { return sigma * bernstein_at(c, t, w); };
   auto root = [&](double a, double b) {  // sigma D > 0 at a, < 0 at b (or the reverse): bisection
     const bool rising = value(a) < 0;
@@ -265,20 +362,23 @@ inline double branch_gap(const Grid<double>& M, int sigma) {
     return 0.5 * (a + b);
   };
   for (double x : {0.25, 0.5, 0.75}) {
-    std::fill(basis.begin(), basis.end(), 0.0);  // the Bernstein basis at x, by de Casteljau's recurrence
-    basis[0] = 1;
-    for (int d = 1; d <= M.nx; ++d)
-      for (int k = d; k >= 0; --k) basis[std::size_t(k)] = (1 - x) * basis[std::size_t(k)] + (k > 0 ? x * basis[std::size_t(k - 1)] : 0);
-    for (int j = 0; j <= M.ny; ++j) {
-      double sum = 0;
-      for (int i = 0; i <= M.nx; ++i) sum += basis[std::size_t(i)] * M.at(i, j);
-      c[std::size_t(j)] = sum;
-    }
+    line_at(M, x, basis, c);
     const double y = minimiser(c, sigma, 24);
     if (!(value(y) < 0 && value(0) > 0 && value(1) > 0)) continue;
     gap = std::min(gap, root(y, 1) - root(0, y));
   }
   return gap;
+}
+
+// Floating point, for the caller's policy: sigma D has a positive minimum on the lines x = 1/4, 1/2, 3/4 (a valley
+// of sigma D above 0 may cross the box).
+inline bool valley_candidate(const Grid<double>& M, int sigma) {
+  std::vector<double> basis, c, w;
+  for (double x : {0.25, 0.5, 0.75}) {
+    line_at(M, x, basis, c);
+    if (!(sigma * bernstein_at(c, minimiser(c, sigma, 24), w) > 0)) return false;
+  }
+  return true;
 }
 
 }  // namespace two_branch
@@ -321,6 +421,38 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
   Two_branch_box none;
   none.screened = screened;
   return none;
+}
+
+/// True if D is proved to have no zero in the box whose grid G is (proved radius): a valley of sigma D above 0
+/// (two_branch::no_zero; y = v, then y = u). Tried only where the minimum of sigma D on three lines across the box
+/// is positive (floating point: a policy). `screened`: nothing proved, but the plain-double screen passed.
+inline bool valley_exclusion(const Double_bernstein_grid& G, int max_depth, std::size_t* strips, bool* screened) {
+  const double rho = G.radius();
+  std::size_t work = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
+    if (ny < 2) continue;
+    double lo, hi;
+    G.second_difference_range(axis == 0 ? 2 : 0, rho, lo, hi);
+    const int sigma = lo > 0 ? 1 : (hi < 0 ? -1 : 0);
+    if (sigma == 0) continue;
+    two_branch::Grid<double> M{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+    if (!two_branch::valley_candidate(M, sigma) || !two_branch::no_zero(M, sigma, max_depth, work)) continue;
+    if (screened) *screened = true;
+    two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
+    for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
+    std::size_t proof = 0;
+    const bool ok = two_branch::no_zero(S, sigma, max_depth, proof);
+    work += 8 * proof;
+    if (ok) {
+      if (strips) *strips += work;
+      return true;
+    }
+  }
+  if (strips) *strips += work;
+  return false;
 }
 
 }  // namespace internal
