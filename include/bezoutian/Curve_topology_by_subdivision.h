@@ -55,6 +55,10 @@
 // u) and no point of the box has D = D_y = 0: D = 0 is then two families of graphs over x, told apart by the sign of
 // D_y, and the exact crossings of each family pair up along x as in a simple box. Two arcs close together (between
 // two nodes with nearly tangent branches, along a thin loop) no longer need boxes thinner than their gap.
+// From the same depth, such a box where sigma D has a positive minimum across it is excluded when D_yy keeps the sign
+// sigma and sigma D - D_y^2 / (2 min sigma D_yy) > 0 along a segment near the valley's floor (two_branch::no_zero):
+// beyond the tips of a thin loop and where two surfaces pass close without meeting, D is small and positive along a
+// valley, and a sign test alone needs boxes about sqrt(min D / D_yy) wide there.
 //
 // Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
 // order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their

@@ -313,15 +313,11 @@ bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     const bool reversed = y_left > y_right;
     const double ya = std::min(y_left, y_right), yb = std::max(y_left, y_right);
     const std::vector<N> g = on_segment(T, ya, yb, reversed, cx, cy, w), h = on_segment(Ty, ya, yb, reversed, cx, cy1, w);
-    // sigma D >= low and (the part of sigma D_y that counts) / ny <= high on the segment. A segment on the edge
-    // y = 0 (both minimisers there) counts only sigma D_y < 0 (y - y0 >= 0, so a positive slope only raises the
-    // bound), one on the edge y = 1 only sigma D_y > 0.
-    const int side = ya == 0 && yb == 0 ? -1 : (ya == 1 && yb == 1 ? 1 : 0);
-    double low = HUGE_VAL, high = 0;
+    double low = HUGE_VAL, high = 0;  // sigma D >= low and |D_y| / ny <= high on the segment
     for (std::size_t k = 0; k < g.size(); ++k) low = std::min(low, lower(quotient(s * g[k], cs[k])));
     for (std::size_t k = 0; k < h.size(); ++k) {
-      const N q = quotient(s * h[k], cs1[k]);
-      high = std::max(high, side < 0 ? -lower(q) : (side > 0 ? upper(q) : std::max(-lower(q), upper(q))));
+      const N q = quotient(h[k], cs1[k]);
+      high = std::max(high, std::max(-lower(q), upper(q)));
     }
     if (least > 0 && low > 0) {
       // 2 L low - (ny high)^2 > 0, with L = ny (ny - 1) least
