@@ -877,3 +877,45 @@ TEST_CASE("two branches close together between two nodes are certified by the tw
     CHECK(found == 1);
   }
 }
+
+TEST_CASE("two nearly tangent surfaces meet along a thin closed loop: certified by subdivision",
+          "[surface][subdivision][valley]") {
+  // Phi(u, v) = (u, v, 0) and Psi(s, t) = (s + s^2/4, t, f(s, t)), f = (4t - 1 - s - s^2)^2 - 2^-24 (1 - 4 (2s - 1)^2):
+  // Psi touches the plane z = 0 along the parabola 4t = 1 + s + s^2 to within 2^-24, and they meet along the loop
+  // |4t - 1 - s - s^2| = 2^-12 sqrt(1 - 4 (2s - 1)^2), s in [1/4, 3/4] (u = s + s^2/4, v = t on Phi). Beyond its tips
+  // f is small and positive along the parabola (a valley of D); the subdivision spent its 20000 boxes there before
+  // (then CGAL's analysis took over, without the certified cells).
+  const Patch phi = from_power({"u", "v", "0"}, 4, 2);
+  const Patch psi = from_power({"u + (1/4)*u^2", "v", "(4*v - 1 - u - u^2)^2 - (1/16777216)*(1 - 4*(2*u - 1)^2)"}, 4, 2);
+  Surface_intersection_options o;
+  o.certify_lifting = false;  // the topology is the point here (the statuses are floating point)
+  o.max_total_degree_for_topology = 0;  // the subdivision only
+  const Surface_locus L = intersection_locus(phi, psi, o);
+  INFO(L.note);
+  REQUIRE(L.topology_method == "subdivision");
+  REQUIRE(L.topology.components.size() == 1);
+  CHECK(L.topology.components[0].closed);
+  CHECK(L.topology.number_of_singular_points() == 0);
+  CHECK(L.topology.number_of_boundary_points() == 0);
+  std::size_t checked = 0, above = 0, below = 0;
+  double lo = 1, hi = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      const double u = q.projection[0], t = q.projection[1];
+      lo = std::min(lo, u), hi = std::max(hi, u);
+      if (!q.lifted || q.residual > 1e-9) continue;
+      const double v = q.partner[0], s = q.partner[1], w = 4 * t - 1 - s - s * s;
+      CHECK(v == Approx(t).margin(1e-9));
+      CHECK(u == Approx(s + s * s / 4).margin(1e-9));
+      CHECK(std::fabs(std::fabs(w) - std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * s - 1) * (2 * s - 1))), -12)) < 1e-8);
+      if (std::fabs(s - 0.5) < 0.2) (w > 0 ? above : below) += 1;
+      ++checked;
+    }
+  CHECK(checked > 1000);
+  CHECK(above > 100);  // both sides of the loop are traced
+  CHECK(below > 100);
+  CHECK(lo < 0.25 + 1.0 / 64 + 1e-4);  // the tips u(1/4) = 17/64, u(3/4) = 57/64
+  CHECK(lo > 0.25 + 1.0 / 64 - 1e-4);
+  CHECK(hi > 57.0 / 64 - 1e-4);
+  CHECK(hi < 57.0 / 64 + 1e-4);
+}
