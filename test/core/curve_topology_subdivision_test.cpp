@@ -39,6 +39,72 @@ void check_samples(const P2& D, const Curve_topology_in_box& t, double tol) {
       CHECK(std::abs(val) <= tol * scale);
     }
 }
+// The thin loop 2^(2e) w^2 = 1 - 4 (2u - 1)^2 along the parabola w = 4v - 1 - u - u^2 = 0: |w| = 2^-e sqrt(1 - 4 (2u -
+// 1)^2), u in [1/4, 3/4]. One closed component, every sample on one of the two branches (within tol), both traced,
+// the whole u-extent (to within `extent`).
+Subdivision_topology_result check_parabola_loop(int e, double tol, double extent) {
+  const P2 w = 4 * v - 1 - u - u * u;
+  const P2 loop = CGAL::ipower(P2(2), 2 * e) * w * w - 1 + 4 * (2 * u - 1) * (2 * u - 1);
+  auto r = subdivide_curve_in_box(loop, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 1);
+  CHECK(r.topology.number_of_singular_points() == 0);
+  CHECK(r.topology.number_of_boundary_points() == 0);
+  check_samples(loop, r.topology, 1e-9);
+  double lo = 1, hi = 0;
+  std::size_t above = 0, below = 0;
+  for (const auto& ed : r.topology.edges)
+    for (const auto& p : ed.polyline) {
+      const double x = p[0], W = 4 * p[1] - 1 - x - x * x, half = std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * x - 1) * (2 * x - 1))), -e);
+      CHECK(std::fabs(std::fabs(W) - half) < tol);
+      (W > 0 ? above : below) += std::fabs(x - 0.5) < 0.2;
+      lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+  CHECK(above > 10);
+  CHECK(below > 10);
+  CHECK(lo < 0.25 + extent);
+  CHECK(hi > 0.75 - extent);
+  return r;
+}
+
+// Two nodes at the rational points (1/3, 13/36) and (2/3, 19/36), joined by the branches w = +-2^-k (3u-1)(3u-2)
+// (w = 4v - 1 - u - u^2), which cross there at 2 * 3 * 2^-k / 4 rad and continue to the edges u = 0 and u = 1: one
+// component, 4 boundary points, 6 edges; the node enclosures hold the exact nodes; every sample on a branch.
+Subdivision_topology_result check_parabola_nodes(int k) {
+  const P2 w = 4 * v - 1 - u - u * u;
+  const P2 nodes = CGAL::ipower(P2(2), 2 * k) * w * w - (3 * u - 1) * (3 * u - 1) * (3 * u - 2) * (3 * u - 2);
+  auto r = subdivide_curve_in_box(nodes, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  CHECK(r.topology.components.size() == 1);
+  CHECK(closed_components(r.topology) == 0);
+  CHECK(r.topology.number_of_boundary_points() == 4);
+  CHECK(r.topology.edges.size() == 6);
+  REQUIRE(r.topology.number_of_singular_points() == 2);
+  for (const auto& x : r.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.branches == 2);
+      const bool first = x.u < 0.5;
+      const double pu = first ? 1.0 / 3 : 2.0 / 3, pv = first ? 13.0 / 36 : 19.0 / 36;
+      CHECK(x.u_lo <= pu);
+      CHECK(pu <= x.u_hi);
+      CHECK(x.v_lo <= pv);
+      CHECK(pv <= x.v_hi);
+    }
+  check_samples(nodes, r.topology, 1e-9);
+  std::size_t above = 0, below = 0;
+  for (const auto& ed : r.topology.edges)
+    for (const auto& p : ed.polyline) {
+      const double W = 4 * p[1] - 1 - p[0] - p[0] * p[0], half = std::ldexp(std::fabs((3 * p[0] - 1) * (3 * p[0] - 2)), -k);
+      CHECK(std::fabs(std::fabs(W) - half) < 1e-9);
+      if (p[0] > 0.4 && p[0] < 0.6) (W > 0 ? above : below) += 1;
+    }
+  CHECK(above > 0);  // both branches are traced between the nodes
+  CHECK(below > 0);
+  return r;
+}
 }  // namespace
 
 TEST_CASE("subdivision: circles and ellipses inside the unit square are closed components", "[topology][subdivision]") {
@@ -526,91 +592,24 @@ TEST_CASE("subdivision: singular points on the box's boundary are reported as no
 
 TEST_CASE("subdivision: two branches close together (a thin loop, a pair of nearly tangent nodes) are certified",
           "[topology][subdivision][two_branch]") {
-  // A loop of width at most 2^-9 along the parabola w = 4v - 1 - u - u^2 = 0: 2^20 w^2 = 1 - 4 (2u - 1)^2, so
-  // |w| = 2^-10 sqrt(1 - 4 (2u - 1)^2) for u in [1/4, 3/4]. A quadtree alone needs boxes thinner than the gap all
-  // along it (it spent its 20000 boxes); boxes holding both branches are resolved by the two-branch certificate.
-  const P2 w = 4 * v - 1 - u - u * u;
-  const P2 loop = CGAL::ipower(P2(2), 20) * w * w - 1 + 4 * (2 * u - 1) * (2 * u - 1);
-  auto r = subdivide_curve_in_box(loop, Parameter_box{});
-  INFO(r.reason);
-  REQUIRE(r.certified);
-  CHECK(r.two_branch_boxes > 0);
-  CHECK(r.topology.components.size() == 1);
-  CHECK(closed_components(r.topology) == 1);
-  CHECK(r.topology.number_of_singular_points() == 0);
-  CHECK(r.topology.number_of_boundary_points() == 0);
-  check_samples(loop, r.topology, 1e-9);
-  double lo = 1, hi = 0;
-  std::size_t above = 0, below = 0;
-  for (const auto& e : r.topology.edges)
-    for (const auto& p : e.polyline) {
-      const double x = p[0], W = 4 * p[1] - 1 - x - x * x, half = std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * x - 1) * (2 * x - 1))), -10);
-      CHECK(std::fabs(std::fabs(W) - half) < 1e-6);  // on one of the two branches (both are traced)
-      (W > 0 ? above : below) += std::fabs(x - 0.5) < 0.2;
-      lo = std::min(lo, x), hi = std::max(hi, x);
-    }
-  CHECK(above > 10);
-  CHECK(below > 10);
-  CHECK(lo < 0.26);
-  CHECK(hi > 0.74);
-  // Two nodes at the rational points (1/3, 13/36) and (2/3, 19/36), joined by the branches w = +-2^-6 (3u-1)(3u-2),
-  // which cross there at 0.023 rad and continue to the edges u = 0 and u = 1: one component, 4 boundary points.
-  const P2 nodes = CGAL::ipower(P2(2), 12) * w * w - (3 * u - 1) * (3 * u - 1) * (3 * u - 2) * (3 * u - 2);
-  r = subdivide_curve_in_box(nodes, Parameter_box{});
-  INFO(r.reason);
-  REQUIRE(r.certified);
-  CHECK(r.two_branch_boxes > 0);
-  CHECK(r.topology.components.size() == 1);
-  CHECK(closed_components(r.topology) == 0);
-  CHECK(r.topology.number_of_boundary_points() == 4);
-  CHECK(r.topology.edges.size() == 6);
-  REQUIRE(r.topology.number_of_singular_points() == 2);
-  for (const auto& x : r.topology.vertices)
-    if (x.kind == Curve_topology_vertex::singular) {
-      CHECK(x.branches == 2);
-      const bool first = x.u < 0.5;
-      const double pu = first ? 1.0 / 3 : 2.0 / 3, pv = first ? 13.0 / 36 : 19.0 / 36;
-      CHECK(x.u_lo <= pu);
-      CHECK(pu <= x.u_hi);
-      CHECK(x.v_lo <= pv);
-      CHECK(pv <= x.v_hi);
-    }
-  check_samples(nodes, r.topology, 1e-9);
+  // A loop of width at most 2^-9 along a parabola. A quadtree alone needs boxes thinner than the gap all along it
+  // (it spent its 20000 boxes); boxes holding both branches are resolved by the two-branch certificate.
+  CHECK(check_parabola_loop(10, 1e-6, 0.01).two_branch_boxes > 0);
+  // Two nodes whose branches cross at 0.023 rad (k = 6).
+  CHECK(check_parabola_nodes(6).two_branch_boxes > 0);
 }
 
 TEST_CASE("subdivision: a loop of width 2^-13 and a near miss 2^-22 deep are certified (valleys of D excluded)",
           "[topology][subdivision][two_branch][valley]") {
-  // Beyond the tips u = 1/4, 3/4 of the loop 2^28 w^2 = 1 - 4 (2u - 1)^2 (w = 4v - 1 - u - u^2, |w| <= 2^-14) the two
-  // branches become a complex pair, and D is small and positive along the parabola w = 0: plain sign tests need
-  // boxes about sqrt(min D / D_vv) wide there, and the subdivision spent its 20000 boxes from width 2^-10 on.
+  // Beyond the tips u = 1/4, 3/4 of the loop 2^28 w^2 = 1 - 4 (2u - 1)^2 (|w| <= 2^-14) the two branches become a
+  // complex pair, and D is small and positive along the parabola w = 0: plain sign tests need boxes about
+  // sqrt(min D / D_vv) wide there, and the subdivision spent its 20000 boxes from width 2^-10 on.
+  CHECK(check_parabola_loop(14, 1e-9, 1e-4).valley_boxes > 0);
   const P2 w = 4 * v - 1 - u - u * u;
-  const P2 loop = CGAL::ipower(P2(2), 28) * w * w - 1 + 4 * (2 * u - 1) * (2 * u - 1);
-  auto r = subdivide_curve_in_box(loop, Parameter_box{});
-  INFO(r.reason);
-  REQUIRE(r.certified);
-  CHECK(r.valley_boxes > 0);
-  CHECK(r.topology.components.size() == 1);
-  CHECK(closed_components(r.topology) == 1);
-  CHECK(r.topology.number_of_singular_points() == 0);
-  CHECK(r.topology.number_of_boundary_points() == 0);
-  check_samples(loop, r.topology, 1e-9);
-  double lo = 1, hi = 0;
-  std::size_t above = 0, below = 0;
-  for (const auto& e : r.topology.edges)
-    for (const auto& p : e.polyline) {
-      const double x = p[0], W = 4 * p[1] - 1 - x - x * x, half = std::ldexp(std::sqrt(std::max(0.0, 1 - 4 * (2 * x - 1) * (2 * x - 1))), -14);
-      CHECK(std::fabs(std::fabs(W) - half) < 1e-9);  // on one of the two branches
-      (W > 0 ? above : below) += std::fabs(x - 0.5) < 0.2;
-      lo = std::min(lo, x), hi = std::max(hi, x);
-    }
-  CHECK(above > 10);
-  CHECK(below > 10);
-  CHECK(lo < 0.2501);
-  CHECK(hi > 0.7499);
   // A near miss: D = 2^44 w^2 + 1 + u^2 >= 1 has no real zero, but its valley along w = 0 is 2^-44 of its
   // coefficients deep (two surfaces that pass close without meeting). Proved empty.
   const P2 miss = CGAL::ipower(P2(2), 44) * w * w + 1 + u * u;
-  r = subdivide_curve_in_box(miss, Parameter_box{});
+  const auto r = subdivide_curve_in_box(miss, Parameter_box{});
   INFO(r.reason);
   REQUIRE(r.certified);
   CHECK(r.valley_boxes > 0);
@@ -619,43 +618,10 @@ TEST_CASE("subdivision: a loop of width 2^-13 and a near miss 2^-22 deep are cer
 }
 
 TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "[topology][subdivision][two_branch]") {
-  // The same two nodes (1/3, 13/36) and (2/3, 19/36), now joined by w = +-2^-14 (3u-1)(3u-2): the branches cross
-  // there at 2 * 3 * 2^-14 / 4 = 9.2e-5 rad (slopes dv/du). The Hessian's determinant at a node is about 2^-28 of
-  // |H|^2 and changes sign a few 1e-9 from it; next to a node the two branches are 9.2e-5 times the distance to it
-  // apart.
-  // Needed: Krawczyk's Jacobian in mean-value form, a Krawczyk box larger than the critical point's rounding
-  // uncertainty, cuts that keep the node inside its box, and the two-branch fold test cut where the minimiser leaves
-  // the box (before: not certified from about 3e-3 rad on).
-  const P2 w = 4 * v - 1 - u - u * u;
-  const P2 nodes = CGAL::ipower(P2(2), 28) * w * w - (3 * u - 1) * (3 * u - 1) * (3 * u - 2) * (3 * u - 2);
-  auto r = subdivide_curve_in_box(nodes, Parameter_box{});
-  INFO(r.reason);
-  REQUIRE(r.certified);
-  CHECK(r.two_branch_boxes > 0);
-  CHECK(r.topology.components.size() == 1);
-  CHECK(closed_components(r.topology) == 0);
-  CHECK(r.topology.number_of_boundary_points() == 4);
-  CHECK(r.topology.edges.size() == 6);
-  REQUIRE(r.topology.number_of_singular_points() == 2);
-  for (const auto& x : r.topology.vertices)
-    if (x.kind == Curve_topology_vertex::singular) {
-      CHECK(x.branches == 2);
-      const bool first = x.u < 0.5;
-      const double pu = first ? 1.0 / 3 : 2.0 / 3, pv = first ? 13.0 / 36 : 19.0 / 36;
-      CHECK(x.u_lo <= pu);
-      CHECK(pu <= x.u_hi);
-      CHECK(x.v_lo <= pv);
-      CHECK(pv <= x.v_hi);
-    }
-  check_samples(nodes, r.topology, 1e-9);
-  // every sample lies on one of the two branches, and both are traced between the nodes
-  std::size_t above = 0, below = 0;
-  for (const auto& e : r.topology.edges)
-    for (const auto& p : e.polyline) {
-      const double W = 4 * p[1] - 1 - p[0] - p[0] * p[0], half = std::ldexp(std::fabs((3 * p[0] - 1) * (3 * p[0] - 2)), -14);
-      CHECK(std::fabs(std::fabs(W) - half) < 1e-9);
-      if (p[0] > 0.4 && p[0] < 0.6) (W > 0 ? above : below) += 1;
-    }
-  CHECK(above > 0);
-  CHECK(below > 0);
+  // The same two nodes with k = 14: the branches cross at 9.2e-5 rad. The Hessian's determinant at a node is about
+  // 2^-28 of |H|^2 and changes sign a few 1e-9 from it; next to a node the two branches are 9.2e-5 times the
+  // distance to it apart. Needed: Krawczyk's Jacobian in mean-value form, a Krawczyk box larger than the critical
+  // point's rounding uncertainty, cuts that keep the node inside its box, the two-branch fold test cut where the
+  // minimiser leaves the box, and the double-double retry (before: not certified from about 3e-3 rad on).
+  CHECK(check_parabola_nodes(14).two_branch_boxes > 0);
 }

@@ -377,6 +377,28 @@ inline bool valley_candidate(const Grid<double>& M, int sigma) {
   return true;
 }
 
+// The box's grid with y across (axis 0: y = v; axis 1: y = u) and sigma, the strict sign of its second differences
+// in y (proved with the grid's radius); false if they have none or D has degree < 2 in y.
+inline bool across(const Double_bernstein_grid& G, int axis, Grid<double>& M, int& sigma) {
+  const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
+  if (ny < 2) return false;
+  double lo, hi;
+  G.second_difference_range(axis == 0 ? 2 : 0, G.radius(), lo, hi);
+  sigma = lo > 0 ? 1 : (hi < 0 ? -1 : 0);
+  if (sigma == 0) return false;
+  M = Grid<double>{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
+  for (int i = 0; i <= nx; ++i)
+    for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+  return true;
+}
+
+// The proved enclosures m_ij +- rho of the midpoints M.
+inline Grid<Double_interval> enclosure(const Grid<double>& M, double rho) {
+  Grid<Double_interval> S{M.nx, M.ny, std::vector<Double_interval>(M.v.size())};
+  for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
+  return S;
+}
+
 }  // namespace two_branch
 
 /// The certificate of the header comment on the box whose Bernstein grid is G (proved radius): graphs over u are
@@ -390,21 +412,14 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
   std::size_t work = 0;
   bool screened = false;
   for (int axis = 0; axis < 2; ++axis) {
-    const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
-    if (ny < 2) continue;
-    double lo, hi;
-    G.second_difference_range(axis == 0 ? 2 : 0, rho, lo, hi);
-    const int sigma = lo > 0 ? 1 : (hi < 0 ? -1 : 0);
-    if (sigma == 0) continue;
-    two_branch::Grid<double> M{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
-    for (int i = 0; i <= nx; ++i)
-      for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+    two_branch::Grid<double> M;
+    int sigma = 0;
+    if (!two_branch::across(G, axis, M, sigma)) continue;
     const double gap = max_gap < 1 ? two_branch::branch_gap(M, sigma) : 0;
     if (!(gap < max_gap)) continue;
     if (!two_branch::no_fold(M, sigma, max_depth, work)) continue;  // the midpoints alone fail: no proof
     screened = true;
-    two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
-    for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
+    const two_branch::Grid<Double_interval> S = two_branch::enclosure(M, rho);
     std::size_t proof = 0;
     const bool ok = two_branch::no_fold(S, sigma, max_depth, proof);
     work += 8 * proof;  // an interval operation costs about eight double ones
@@ -426,19 +441,12 @@ inline bool valley_exclusion(const Double_bernstein_grid& G, int max_depth, std:
   const double rho = G.radius();
   std::size_t work = 0;
   for (int axis = 0; axis < 2; ++axis) {
-    const int nx = axis == 0 ? G.a() : G.b(), ny = axis == 0 ? G.b() : G.a();
-    if (ny < 2) continue;
-    double lo, hi;
-    G.second_difference_range(axis == 0 ? 2 : 0, rho, lo, hi);
-    const int sigma = lo > 0 ? 1 : (hi < 0 ? -1 : 0);
-    if (sigma == 0) continue;
-    two_branch::Grid<double> M{nx, ny, std::vector<double>(std::size_t(nx + 1) * (ny + 1))};
-    for (int i = 0; i <= nx; ++i)
-      for (int j = 0; j <= ny; ++j) M.at(i, j) = axis == 0 ? G.at(i, j) : G.at(j, i);
+    two_branch::Grid<double> M;
+    int sigma = 0;
+    if (!two_branch::across(G, axis, M, sigma)) continue;
     if (!two_branch::valley_candidate(M, sigma) || !two_branch::no_zero(M, sigma, max_depth, work)) continue;
     if (screened) *screened = true;
-    two_branch::Grid<Double_interval> S{nx, ny, std::vector<Double_interval>(M.v.size())};
-    for (std::size_t k = 0; k < M.v.size(); ++k) S.v[k] = Double_interval::widen(M.v[k] - rho, M.v[k] + rho);
+    const two_branch::Grid<Double_interval> S = two_branch::enclosure(M, rho);
     std::size_t proof = 0;
     const bool ok = two_branch::no_zero(S, sigma, max_depth, proof);
     work += 8 * proof;
