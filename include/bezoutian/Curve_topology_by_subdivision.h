@@ -142,7 +142,8 @@ struct Subdivision_topology_options {
   /// comment. Empty: such points leave the result not certified.
   std::vector<Known_multiple_point> multiple_points;
   /// From this depth on, a box that is neither excluded, simple nor resolved around a singular point tries the
-  /// two-branch certificate (two arcs of D = 0 close together, internal/two_branch_box.h); INT_MAX disables it.
+  /// two-branch certificate (two arcs of D = 0 close together, internal/two_branch_box.h) and the valley exclusion
+  /// (D small but nonzero along a valley: no arcs); INT_MAX disables both.
   int two_branch_depth = 6;
   /// ... and only when its two branches are closer than this fraction of the box (floating point, a policy: two
   /// branches further apart are separated by a few more splits, into cells where the curve is one graph, and the
