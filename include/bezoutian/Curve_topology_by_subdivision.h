@@ -941,13 +941,8 @@ class Subdivision_topology {
   bool resolve_two_branches(Box& B) {
     std::size_t strips = 0;  // strip grids computed, each about as costly as one double split of B: the budget
     Two_branch_box t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
-    // the screen passed but the proof failed: near a node whose branches cross at a small angle, sigma D on the
-    // segments is below the radius of a double grid split down from the domain; the double-double restriction
-    // of the domain's grid is sharper (to the double rounding of its midpoints)
-    if (t.axis < 0 && t.screened && dd_root_ && !B.grid && B.fast->radius() > std::ldexp(B.fast->max_abs(), -48)) {
-      B.fast = double_double_grid(B);
+    if (t.axis < 0 && t.screened && sharpen_grid(B))
       t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
-    }
     work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
     if (t.axis < 0) return false;
     for (const Rational* cu : {&B.u0, &B.u1})  // the curve through a domain corner: not handled here
@@ -989,16 +984,23 @@ class Subdivision_topology {
     return true;
   }
 
-  // A box excluded as a valley of sigma D above 0 (valley_exclusion): no arcs. Retried on the double-double grid
-  // when only the radius failed, as in resolve_two_branches.
+  // When a certificate's plain-double screen passed but its proof failed, the proof may have failed on the grid's
+  // radius alone: next to a node whose branches cross at a small angle, or along a deep valley, the values that
+  // decide are below the radius of a double grid split down from the domain. B's grid is then replaced by the
+  // double-double restriction of the domain's grid (sharp to the double rounding of its midpoints); false if that
+  // cannot make it sharper.
+  bool sharpen_grid(Box& B) {
+    if (!dd_root_ || B.grid || !(B.fast->radius() > std::ldexp(B.fast->max_abs(), -48))) return false;
+    B.fast = double_double_grid(B);
+    return true;
+  }
+
+  // A box excluded as a valley of sigma D above 0 (valley_exclusion): no arcs.
   bool valley_excluded(Box& B) {
     std::size_t strips = 0;
     bool screened = false;
     bool ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, &screened);
-    if (!ok && screened && dd_root_ && !B.grid && B.fast->radius() > std::ldexp(B.fast->max_abs(), -48)) {
-      B.fast = double_double_grid(B);
-      ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, nullptr);
-    }
+    if (!ok && screened && sharpen_grid(B)) ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, nullptr);
     work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
     if (ok) ++valley_boxes_;
     return ok;

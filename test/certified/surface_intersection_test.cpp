@@ -919,3 +919,37 @@ TEST_CASE("two nearly tangent surfaces meet along a thin closed loop: certified 
   CHECK(hi > 57.0 / 64 - 1e-4);
   CHECK(hi < 57.0 / 64 + 1e-4);
 }
+
+TEST_CASE("two nearly tangent surfaces: the statuses along the thin loop are proved, with partners in closed form",
+          "[surface][lifting][valley]") {
+  // The same surfaces with 2^-20 for 2^-24 (a loop of width 2^-11), the lifting on. The chained proof along the
+  // two-branch arcs needs spans far shorter than the traced ones: with four halvings 94.7 % of the points were
+  // proved (7627 of 8054), with eight 99.4 %. Every proved status is genuine (the partner (v, s) = (t, s(u)),
+  // s(u) = 2 sqrt(1 + u) - 2, lies in [0, 1]^2), and its proved box holds that partner.
+  const Patch phi = from_power({"u", "v", "0"}, 4, 2);
+  const Patch psi = from_power({"u + (1/4)*u^2", "v", "(4*v - 1 - u - u^2)^2 - (1/1048576)*(1 - 4*(2*u - 1)^2)"}, 4, 2);
+  Surface_intersection_options o;
+  o.max_total_degree_for_topology = 0;
+  const Surface_locus L = intersection_locus(phi, psi, o);
+  INFO(L.note);
+  REQUIRE(L.topology_method == "subdivision");
+  REQUIRE(L.topology.components.size() == 1);
+  std::size_t points = 0, proved = 0;
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points) {
+      ++points;
+      if (!q.status_proved) continue;
+      ++proved;
+      CHECK(q.genuine);
+      const double u = q.projection[0], t = q.projection[1], s = 2 * std::sqrt(1 + u) - 2;
+      const auto& E = q.partner_enclosure;
+      CHECK(E[0][0] <= t + 1e-7);
+      CHECK(t - 1e-7 <= E[0][1]);
+      CHECK(E[1][0] <= s + 1e-7);
+      CHECK(s - 1e-7 <= E[1][1]);
+      CHECK(E[0][1] - E[0][0] < 1e-6);
+      CHECK(E[1][1] - E[1][0] < 1e-6);
+    }
+  CHECK(points > 1000);
+  CHECK(proved >= points * 99 / 100);
+}
