@@ -51,16 +51,17 @@ struct Curve_topology_vertex {
 /// graph_axis 0 every line u = c meets the curve inside `cell` at most once (v = g(u), dD/dv != 0 on the cell),
 /// for graph_axis 1 every line v = c does. graph_axis -1: not a proved graph in its cell: a half-branch inside the
 /// box of a singular point, or one of the two arcs of a two-branch cell (internal/two_branch_box.h; each is a
-/// graph, but a line of the cell may also meet the other arc). The piece runs through polyline[first .. last]; its
-/// end points are crossings of the cell's edges (or the singular point) with the enclosures first_box, last_box =
-/// {u_lo, u_hi, v_lo, v_hi}.
+/// graph, but a line of the cell may also meet the other arc), or of a fold cell (internal/fold_box.h: from a
+/// crossing to the fold point, where the curve turns back). The piece runs through polyline[first .. last]; its
+/// end points are crossings of the cell's edges (or the singular or fold point) with the enclosures first_box,
+/// last_box = {u_lo, u_hi, v_lo, v_hi}.
 struct Curve_topology_piece {
   Parameter_box cell;
   int graph_axis = -1;
   std::size_t first = 0, last = 0;
   std::array<double, 4> first_box{}, last_box{};
-  /// graph_axis -1: which end (0: first, 1: last) is the singular point (in a two-branch cell: the end that the
-  /// lifting's chained proof does not start from); the other end is a crossing of the cell's
+  /// graph_axis -1: which end (0: first, 1: last) is the singular (or fold) point (in a two-branch cell: the end
+  /// that the lifting's chained proof does not start from); the other end is a crossing of the cell's
   /// edge, with its exact isolating box (degenerate along the edge's line; the interval along the line holds no
   /// other root of D restricted to that line) and whether that line is vertical (u = const).
   int singular_end = -1;

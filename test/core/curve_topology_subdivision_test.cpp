@@ -617,6 +617,16 @@ TEST_CASE("subdivision: a loop of width 2^-13 and a near miss 2^-22 deep are cer
   CHECK(r.topology.edges.empty());
 }
 
+TEST_CASE("subdivision: loops of width 2^-17 and 2^-21 are certified (one fold box at each tip)",
+          "[topology][subdivision][fold]") {
+  // At a tip of the loop 2^(2e) w^2 = 1 - 4 (2u - 1)^2 the tangent is vertical (the fold, D = D_v = 0) and, about
+  // 2^(-2e) away, horizontal (D = D_u = 0): a box holding both has neither derivative of one sign, and splitting
+  // needs boxes 2^(-2e) wide, beyond the depth limit from width 2^-14 on. The fold certificate resolves the tip's
+  // box whole: the loop is traced to its tips u = 1/4 and 3/4 (within 1e-6), every point on its branch.
+  CHECK(check_parabola_loop(18, 1e-9, 1e-6).fold_boxes == 2);
+  CHECK(check_parabola_loop(22, 1e-9, 1e-6).fold_boxes == 2);
+}
+
 TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "[topology][subdivision][two_branch]") {
   // The same two nodes with k = 14: the branches cross at 9.2e-5 rad. The Hessian's determinant at a node is about
   // 2^-28 of |H|^2 and changes sign a few 1e-9 from it; next to a node the two branches are 9.2e-5 times the

@@ -1,7 +1,9 @@
-// The two-branch certificate (internal/two_branch_box.h) on Bernstein grids of polynomials known in closed form: it
-// must hold where D = 0 is two branches without a fold (D = D_y = 0) in the box, and fail wherever there is one.
+// The two-branch and fold certificates (internal/two_branch_box.h, fold_box.h) on Bernstein grids of polynomials known
+// in closed form: the first must hold where D = 0 is two branches without a fold (D = D_y = 0) in the box, and fail
+// wherever there is one; the second must hold where there is exactly one fold (D_x != 0 there), and fail otherwise.
 #include <catch2/catch.hpp>
 
+#include <bezoutian/internal/fold_box.h>
 #include <bezoutian/internal/two_branch_box.h>
 
 #include <cmath>
@@ -66,4 +68,49 @@ TEST_CASE("two-branch certificate: a fold inside the box (a vertical or horizont
   CHECK(two_branch_certificate(grid_of({{0.25 - 0.25 * k, -1, 1}, {k, 0, 0}, {-k, 0, 0}})).axis == -1);
   // a single line crosses nothing twice, but D = (v - 1/2) has no second derivative: not this certificate's case
   CHECK(two_branch_certificate(grid_of({{-0.5, 1}})).axis == -1);
+}
+
+TEST_CASE("fold certificate: a parabola's vertical tangent is one fold, enclosed; two folds, a cusp, a node are refused",
+          "[topology][subdivision][fold]") {
+  using bezoutian::internal::Fold_box;
+  using bezoutian::internal::fold_certificate;
+  auto holds = [](const Fold_box& f, double x, double y) {
+    CHECK(f.xa < x);
+    CHECK(x < f.xb);
+    CHECK(f.ya < y);
+    CHECK(y < f.yb);
+    CHECK(f.xb - f.xa < 1e-2);
+    CHECK(f.yb - f.ya < 1e-2);
+  };
+  // (v - 1/2)^2 = (u - 1/2) / 4: the fold (1/2, 1/2) (D = D_v = 0, D_u = -1/4), the curve on its side u > 1/2;
+  // the fold lies on one of the lines that locate it
+  Fold_box f = fold_certificate(grid_of({{0.375, -1, 1}, {-0.25, 0, 0}}));
+  CHECK(f.axis == 0);
+  CHECK(f.sigma == 1);
+  CHECK(f.curve_side == 1);
+  holds(f, 0.5, 0.5);
+  // mirrored, (v - 1/2)^2 = (1/2 - u) / 4 (curve on u < 1/2), and off the sample lines, (v - 1/2)^2 = (u - 0.3) / 4
+  f = fold_certificate(grid_of({{0.125, -1, 1}, {0.25, 0, 0}}));
+  CHECK(f.axis == 0);
+  CHECK(f.curve_side == -1);
+  holds(f, 0.5, 0.5);
+  f = fold_certificate(grid_of({{0.25 + 0.075, -1, 1}, {-0.25, 0, 0}}));
+  CHECK(f.axis == 0);
+  CHECK(f.curve_side == 1);
+  holds(f, 0.3, 0.5);
+  // the same turned over, (u - 1/2)^2 = (v - 1/2) / 4: a horizontal tangent, a fold with y = u; -D: sigma = -1
+  f = fold_certificate(grid_of({{-0.375, 0.25}, {1, 0}, {-1, 0}}));
+  CHECK(f.axis == 1);
+  CHECK(f.sigma == -1);
+  CHECK(f.curve_side == 1);
+  holds(f, 0.5, 0.5);
+  // the circle (u - 1/2)^2 + (v - 1/2)^2 = 1/16: two folds across each axis
+  CHECK(fold_certificate(grid_of({{0.5 - 1.0 / 16, -1, 1}, {-1, 0, 0}, {1, 0, 0}})).axis == -1);
+  // the cusp (v - 1/2)^2 = (u - 1/2)^3: D = D_v = 0 and the least value of D on the lines u = const changes sign at
+  // u = 1/2, but D_u = 0 there too (a singular point, not a fold); D_uu changes sign, so no fold with y = u either
+  CHECK(fold_certificate(grid_of({{0.375, -1, 1}, {-0.75, 0, 0}, {1.5, 0, 0}, {-1, 0, 0}})).axis == -1);
+  // a node with nearly tangent branches, (v - 1/2)^2 = (u - 1/2)^2 / 10000, and two parallel lines: no sign change
+  const double k = 1e-4;
+  CHECK(fold_certificate(grid_of({{0.25 - 0.25 * k, -1, 1}, {k, 0, 0}, {-k, 0, 0}})).axis == -1);
+  CHECK(fold_certificate(grid_of({{0.25 - 1.0 / 4096, -1, 1}})).axis == -1);
 }

@@ -234,18 +234,70 @@ std::pair<double, double> edge_minimisers(const Grid<N>& T, int sigma) {
   return {minimiser(left, sigma), minimiser(right, sigma)};
 }
 
-// True if every line x = const of the strip [xa, xb] x [0, 1] (in the box's local coordinates) carries no point with
-// D = D_y = 0: by one of the three tests of the header comment, on halves of the strip down to `max_depth` halvings.
-// `strips` counts the strip grids computed (the work).
+inline double quotient(double a, double c) { return a / c; }
+// a / c for c > 0, outward rounded
+inline I quotient(const I& a, const I& c) {
+  const double q[4] = {a.lo / c.lo, a.lo / c.hi, a.hi / c.lo, a.hi / c.hi};
+  return I::widen(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
+}
+
+// The valley bound on a strip T = X x [0, 1] (sigma D_yy > 0 there): with L > 0 a lower bound of sigma D_yy on the
+// strip and (x, y0(x)) a segment across it, on each line x
+//   sigma D(x, y) >= sigma D(x, y0) + sigma D_y(x, y0) (y - y0) + L/2 (y - y0)^2 >= sigma D(x, y0) - D_y(x, y0)^2 / (2L),
+// and the Bernstein coefficients on the segment bound sigma D(x, y0) from below and |D_y(x, y0)| from above. The
+// segment joins the minimisers of sigma D on the strip's edges; the bound needs it within about the valley's width
+// of the valley's floor. operator() is true if the bound proves sigma D > 0 on the strip.
 template <class N>
-bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
+struct Valley_bound {
+  int nx, ny;
+  std::vector<N> cx, cy, cy1, cs, cs1;
+  Grid<N> Ty;
+  Valley_bound(int nx_, int ny_)
+      : nx(nx_), ny(ny_), cx(binomials<N>(nx_)), cy(binomials<N>(ny_)), cy1(binomials<N>(std::max(ny_ - 1, 0))),
+        cs(binomials<N>(nx_ + ny_)), cs1(binomials<N>(std::max(nx_ + ny_ - 1, 0))),
+        Ty{nx_, std::max(ny_ - 1, 0), std::vector<N>(std::size_t(nx_ + 1) * std::max(ny_, 1))} {}
+  bool operator()(const Grid<N>& T, int sigma, std::vector<N>& w) {
+    if (ny < 2) return false;
+    const N s = constant(N{}, double(sigma));
+    double least = HUGE_VAL;  // the least sigma-second difference in y on the strip: L = ny (ny - 1) least
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j + 2 <= ny; ++j) least = std::min(least, lower(s * (T.at(i, j + 2) - T.at(i, j + 1) - T.at(i, j + 1) + T.at(i, j))));
+    if (!(least > 0)) return false;
+    for (int i = 0; i <= nx; ++i)
+      for (int j = 0; j < ny; ++j) Ty.at(i, j) = T.at(i, j + 1) - T.at(i, j);  // D_y = ny x (this grid)
+    const auto [y_left, y_right] = edge_minimisers(T, sigma);
+    const bool reversed = y_left > y_right;
+    const double ya = std::min(y_left, y_right), yb = std::max(y_left, y_right);
+    const std::vector<N> g = on_segment(T, ya, yb, reversed, cx, cy, w), h = on_segment(Ty, ya, yb, reversed, cx, cy1, w);
+    double low = HUGE_VAL, high = 0;  // sigma D >= low and |D_y| / ny <= high on the segment
+    for (std::size_t k = 0; k < g.size(); ++k) low = std::min(low, lower(quotient(s * g[k], cs[k])));
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      const N q = quotient(h[k], cs1[k]);
+      high = std::max(high, std::max(-lower(q), upper(q)));
+    }
+    if (!(low > 0)) return false;
+    // 2 L low - (ny high)^2 > 0, with L = ny (ny - 1) least
+    const N L = constant(N{}, least) * constant(N{}, double(ny) * (ny - 1)), H = constant(N{}, high) * constant(N{}, double(ny));
+    return lower(constant(N{}, 2) * L * constant(N{}, low) - H * H) > 0;
+  }
+};
+
+// True if every line x = const of the strip [x_from, x_to] x [0, 1] (in the box's local coordinates) carries no
+// point with D = D_y = 0: by one of the three tests of the header comment (or, if `valley`, because the valley bound
+// proves D != 0 on the strip), on halves of the strip down to `max_depth` halvings. `strips` counts the strip grids
+// computed (the work).
+template <class N>
+bool no_fold(const Grid<N>& S, int sigma, double x_from, double x_to, int max_depth, std::size_t& strips,
+             bool valley = false) {
   struct Piece {
     double xa, xb;
     int depth;
   };
+  if (!(x_from < x_to)) return true;
   const std::vector<N> cx = binomials<N>(S.nx), cy = binomials<N>(S.ny);
-  std::vector<Piece> todo{{0, 1, 0}};
+  std::vector<Piece> todo{{x_from, x_to, 0}};
   Grid<N> T{S.nx, S.ny, std::vector<N>(S.v.size())};
+  Valley_bound<N> above(S.nx, S.ny);
   std::vector<N> w;
   while (!todo.empty()) {
     const Piece p = todo.back();
@@ -260,6 +312,7 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     bool negative = true;  // sigma D < 0 on the segment
     for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
     if (negative) continue;
+    if (valley && above(T, sigma, w)) continue;
     if (p.depth >= max_depth) return false;
     const double m = p.xa + window_cut(T, sigma, y_left, y_right) * (p.xb - p.xa);
     todo.push_back({m, p.xb, p.depth + 1});
@@ -268,22 +321,11 @@ bool no_fold(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   return true;
 }
 
-inline double quotient(double a, double c) { return a / c; }
-// a / c for c > 0, outward rounded
-inline I quotient(const I& a, const I& c) {
-  const double q[4] = {a.lo / c.lo, a.lo / c.hi, a.hi / c.lo, a.hi / c.hi};
-  return I::widen(*std::min_element(q, q + 4), *std::max_element(q, q + 4));
-}
-
 // True if D has no zero in the closed box (sigma D_yy > 0 there: the caller's test). On each piece X of the x-range
-// (halving), D has one strict sign on the strip X x [0, 1], or the strip is a valley of sigma D above 0: with
-// L > 0 a lower bound of sigma D_yy on the strip and (x, y0(x)) a segment across it, on each line x
-//   sigma D(x, y) >= sigma D(x, y0) + sigma D_y(x, y0) (y - y0) + L/2 (y - y0)^2 >= sigma D(x, y0) - D_y(x, y0)^2 / (2L),
-// and the Bernstein coefficients on the segment bound sigma D(x, y0) from below and |D_y(x, y0)| from above. The
-// segment joins the minimisers of sigma D on the strip's edges; the bound needs it within about the valley's
-// width of the valley's floor, so strips are halved down to `max_depth` times.
-// Two branches that become a complex pair (beyond the tips of a thin loop, a near miss of two surfaces) leave
-// such a valley, where D is small and positive: a plain sign test needs boxes about sqrt(min D / D_yy) wide there.
+// (halving, down to `max_depth` times), D has one strict sign on the strip X x [0, 1], or the strip is a valley of
+// sigma D above 0 (Valley_bound). Two branches that become a complex pair (beyond the tips of a thin loop, a near miss
+// of two surfaces) leave such a valley, where D is small and positive: a plain sign test needs boxes about
+// sqrt(min D / D_yy) wide there.
 template <class N>
 bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   if (S.ny < 2) return false;
@@ -291,39 +333,16 @@ bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     double xa, xb;
     int depth;
   };
-  const int nx = S.nx, ny = S.ny;
-  const std::vector<N> cx = binomials<N>(nx), cy = binomials<N>(ny), cy1 = binomials<N>(ny - 1),
-                       cs = binomials<N>(nx + ny), cs1 = binomials<N>(nx + ny - 1);
   std::vector<Piece> todo{{0, 1, 0}};
-  Grid<N> T{nx, ny, std::vector<N>(S.v.size())}, Ty{nx, ny - 1, std::vector<N>(std::size_t(nx + 1) * ny)};
+  Grid<N> T{S.nx, S.ny, std::vector<N>(S.v.size())};
+  Valley_bound<N> above(S.nx, S.ny);
   std::vector<N> w;
-  const N s = constant(N{}, double(sigma));
   while (!todo.empty()) {
     const Piece p = todo.back();
     todo.pop_back();
     ++strips;
     strip_grid(S, p.xa, p.xb, T, w);
-    if (common_sign(T) != 0) continue;
-    double least = HUGE_VAL;  // the least sigma-second difference in y on the strip: L = ny (ny - 1) least
-    for (int i = 0; i <= nx; ++i)
-      for (int j = 0; j + 2 <= ny; ++j) least = std::min(least, lower(s * (T.at(i, j + 2) - T.at(i, j + 1) - T.at(i, j + 1) + T.at(i, j))));
-    for (int i = 0; i <= nx; ++i)
-      for (int j = 0; j < ny; ++j) Ty.at(i, j) = T.at(i, j + 1) - T.at(i, j);  // D_y = ny x (this grid)
-    const auto [y_left, y_right] = edge_minimisers(T, sigma);
-    const bool reversed = y_left > y_right;
-    const double ya = std::min(y_left, y_right), yb = std::max(y_left, y_right);
-    const std::vector<N> g = on_segment(T, ya, yb, reversed, cx, cy, w), h = on_segment(Ty, ya, yb, reversed, cx, cy1, w);
-    double low = HUGE_VAL, high = 0;  // sigma D >= low and |D_y| / ny <= high on the segment
-    for (std::size_t k = 0; k < g.size(); ++k) low = std::min(low, lower(quotient(s * g[k], cs[k])));
-    for (std::size_t k = 0; k < h.size(); ++k) {
-      const N q = quotient(h[k], cs1[k]);
-      high = std::max(high, std::max(-lower(q), upper(q)));
-    }
-    if (least > 0 && low > 0) {
-      // 2 L low - (ny high)^2 > 0, with L = ny (ny - 1) least
-      const N L = constant(N{}, least) * constant(N{}, double(ny) * (ny - 1)), H = constant(N{}, high) * constant(N{}, double(ny));
-      if (lower(constant(N{}, 2) * L * constant(N{}, low) - H * H) > 0) continue;
-    }
+    if (common_sign(T) != 0 || above(T, sigma, w)) continue;
     if (p.depth >= max_depth) return false;
     const double m = 0.5 * (p.xa + p.xb);
     todo.push_back({m, p.xb, p.depth + 1});
@@ -417,11 +436,11 @@ inline Two_branch_box two_branch_certificate(const Double_bernstein_grid& G, int
     if (!two_branch::across(G, axis, M, sigma)) continue;
     const double gap = max_gap < 1 ? two_branch::branch_gap(M, sigma) : 0;
     if (!(gap < max_gap)) continue;
-    if (!two_branch::no_fold(M, sigma, max_depth, work)) continue;  // the midpoints alone fail: no proof
+    if (!two_branch::no_fold(M, sigma, 0, 1, max_depth, work)) continue;  // the midpoints alone fail: no proof
     screened = true;
     const two_branch::Grid<Double_interval> S = two_branch::enclosure(M, rho);
     std::size_t proof = 0;
-    const bool ok = two_branch::no_fold(S, sigma, max_depth, proof);
+    const bool ok = two_branch::no_fold(S, sigma, 0, 1, max_depth, proof);
     work += 8 * proof;  // an interval operation costs about eight double ones
     if (ok) {
       if (strips) *strips += work;
