@@ -113,4 +113,19 @@ TEST_CASE("fold certificate: a parabola's vertical tangent is one fold, enclosed
   const double k = 1e-4;
   CHECK(fold_certificate(grid_of({{0.25 - 0.25 * k, -1, 1}, {k, 0, 0}, {-k, 0, 0}})).axis == -1);
   CHECK(fold_certificate(grid_of({{0.25 - 1.0 / 4096, -1, 1}})).axis == -1);
+  // The strip test itself, on the first parabola with y-windows chosen by hand: [0.49, 0.51] holds the minimisers
+  // v = 1/2 of the lines, and the strip around u = 1/2 passes; [0.501, 0.6] misses them (D_v changes sign below the
+  // window), although D_u = -1/4 keeps its sign on it and the least values at the strip's ends have opposite signs,
+  using bezoutian::internal::fold::Window;
+  const auto parabola = grid_of({{0.375, -1, 1}, {-0.25, 0, 0}});
+  bezoutian::internal::two_branch::Grid<double> M{1, 2, {parabola.at(0, 0), parabola.at(0, 1), parabola.at(0, 2),
+                                                         parabola.at(1, 0), parabola.at(1, 1), parabola.at(1, 2)}};
+  const double d = 1.0 / 256;
+  int side = 0;
+  std::size_t strips = 0;
+  CHECK(bezoutian::internal::fold::fold_strip(M, 1, {Window{0.5 - d, 0.5 + d, 0.49, 0.51}}, side, strips));
+  CHECK(side == 1);
+  CHECK_FALSE(bezoutian::internal::fold::fold_strip(M, 1, {Window{0.5 - d, 0.5 + d, 0.501, 0.6}}, side, strips));
+  // ... and a strip around u = 0.3, beside the fold: the least values at its ends are both positive
+  CHECK_FALSE(bezoutian::internal::fold::fold_strip(M, 1, {Window{0.3 - d, 0.3 + d, 0.49, 0.51}}, side, strips));
 }
