@@ -389,6 +389,36 @@ TEST_CASE("a patch without self-intersection: the empty locus is proved", "[surf
   }
 }
 
+TEST_CASE("pinch points at a domain corner: a collapsed edge vector (P10 = P00) makes the corner one", "[surface][pinch]") {
+  // phi_u(0, 0) = m w10 / w00 (P10 - P00) (the derivative of a rational Bezier patch at its corner), so P10 = P00 gives
+  // phi_u = 0 there: the Jacobian has rank <= 1 at the corner (0, 0), which the search must report.
+  auto holds_corner = [](const Pinch_point_search& r) {
+    bool found = false;
+    for (const Pinch_point& p : r.points)
+      found = found || (p.box[0][0] <= 0 && 0 <= p.box[0][1] && p.box[1][0] <= 0 && 0 <= p.box[1][1]);
+    return found;
+  };
+  // a (2,2) polynomial patch written with P10 = P00
+  const std::vector<std::vector<Patch::Point>> net = {{{Q(0), Q(0), Q(0)}, {Q(0), Q(1), Q(0)}, {Q(0), Q(2), Q(1)}},
+                                                      {{Q(0), Q(0), Q(0)}, {Q(1), Q(1), Q(1)}, {Q(1), Q(2), Q(0)}},
+                                                      {{Q(2), Q(0), Q(1)}, {Q(2), Q(1), Q(0)}, {Q(2), Q(2), Q(2)}}};
+  Pinch_point_search r = internal::find_pinch_points(Patch(net), Parameter_box{});
+  CHECK(r.complete);
+  CHECK(holds_corner(r));
+  // the random rational bicubic of the (3,3) sweep's seed 1 (third draw), whose integer control points happen to
+  // have P10 = P00: the pinch point its self-intersection reports at (0, 0) is that corner
+  std::mt19937 g(1);
+  Patch a = Patch(net);
+  for (int trial = 0; trial < 3; ++trial) {
+    a = random_patch(g, 3, 3, trial >= 2);
+    random_patch(g, 3, 3, trial >= 2);  // (the sweep draws its patches in pairs)
+  }
+  REQUIRE(a.control_point(1, 0) == a.control_point(0, 0));
+  r = internal::find_pinch_points(a, Parameter_box{});
+  CHECK(r.complete);
+  CHECK(holds_corner(r));
+}
+
 TEST_CASE("pinch points: found exactly where the Jacobian has rank 1; a degenerate one is reported, not guessed",
           "[surface][pinch]") {
   // The Whitney-umbrella-like patch (u v + v^2, v, u^2): phi_u = (v, 0, 2u), phi_v = (u + 2v, 1, 0) are parallel
