@@ -953,6 +953,24 @@ class Subdivision_topology {
   const Algebraic_real& line_root(const Crossing& c) const {
     return lines_.at(std::make_pair(c.vertical, c.c)).roots[std::size_t(c.index)].root;
   }
+  // The crossings of the four edges of B, positioned along u (by_u) or v; false where edge_crossings refuses one.
+  bool crossings_of_edges(const Box& B, bool by_u, std::vector<Crossing>& cr) {
+    return edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) && edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) &&
+           edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) && edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr);
+  }
+  // The budget of a certificate's strip grids, each about as costly as one double split of a box.
+  void charge_strips(std::size_t strips) { work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16; }
+  // The arc of one family (root_side: below or above the minimiser of sigma D on the lines x = const) between the
+  // crossings c and d of a two-branch or fold box. It starts at the end on a line x = const when there is one: the
+  // lifting's chained proof runs from n0 along x (certify_half_branch).
+  void add_branch_arc(const Box& B, bool by_u, const Crossing& c, const Crossing& d, int root_side, int sigma) {
+    const bool second = c.vertical != by_u && d.vertical == by_u;
+    const Crossing &a = second ? d : c, &b = second ? c : d;
+    Arc arc{node(a.vertical, a.c, a.index), node(b.vertical, b.c, b.index), {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
+    sample_arc(B, by_u, a.position, b.position, arc.inner, root_side, sigma);
+    arcs_.push_back(arc);
+  }
+
   // A box with two branches (two_branch_certificate): the crossings of each class sigma D_y < 0, sigma D_y > 0, sorted
   // along x, pair up into arcs, as in a simple box. Each arc starts at (n0) the end that lies on a line x = const
   // when there is one: the lifting's chained proof runs from n0 along x (certify_half_branch).
@@ -961,13 +979,11 @@ class Subdivision_topology {
     Two_branch_box t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
     if (t.axis < 0 && t.screened && sharpen_grid(B))
       t = two_branch_certificate(*B.fast, two_branch_strip_depth, &strips, o_.two_branch_max_gap);
-    work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+    charge_strips(strips);
     if (t.axis < 0 || curve_at_domain_corner(B)) return false;
     const bool by_u = t.axis == 0;
     std::vector<Crossing> cr;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr))
-      return false;
+    if (!crossings_of_edges(B, by_u, cr)) return false;
     std::vector<Crossing> cls[2];
     for (const Crossing& c : cr) {
       const int s = cross_derivative_sign(B, c, t.axis);
@@ -986,13 +1002,7 @@ class Subdivision_topology {
       // sigma D_y < 0 on it
       const int root_side = (side == 1) == (t.sigma > 0) ? 1 : -1;
       const std::vector<Crossing>& k = cls[side];
-      for (std::size_t i = 0; i + 1 < k.size(); i += 2) {
-        const bool second = k[i].vertical != by_u && k[i + 1].vertical == by_u;  // anchor on a line x = const
-        const Crossing &a = second ? k[i + 1] : k[i], &b = second ? k[i] : k[i + 1];
-        Arc arc{node(a.vertical, a.c, a.index), node(b.vertical, b.c, b.index), {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
-        sample_arc(B, by_u, a.position, b.position, arc.inner, root_side, t.sigma);
-        arcs_.push_back(arc);
-      }
+      for (std::size_t i = 0; i + 1 < k.size(); i += 2) add_branch_arc(B, by_u, k[i], k[i + 1], root_side, t.sigma);
     }
     ++two_branch_boxes_;
     return true;
@@ -1016,13 +1026,11 @@ class Subdivision_topology {
     std::size_t strips = 0;
     Fold_box f = fold_certificate(*B.fast, fold_strip_depth, &strips);
     if (f.axis < 0 && f.screened && sharpen_grid(B)) f = fold_certificate(*B.fast, fold_strip_depth, &strips);
-    work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+    charge_strips(strips);
     if (f.axis < 0 || curve_at_domain_corner(B)) return false;
     const bool by_u = f.axis == 0;
     std::vector<Crossing> cr;
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, by_u, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, by_u, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, by_u, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, by_u, cr))
-      return false;
+    if (!crossings_of_edges(B, by_u, cr)) return false;
     // p's enclosure in the domain's coordinates (exact: the local bounds are doubles)
     const Rational &x0 = by_u ? B.u0 : B.v0, &x1 = by_u ? B.u1 : B.v1, &y0 = by_u ? B.v0 : B.u0, &y1 = by_u ? B.v1 : B.u1;
     const Rational xa = x0 + Rational(f.xa) * (x1 - x0), xb = x0 + Rational(f.xb) * (x1 - x0);
@@ -1071,14 +1079,7 @@ class Subdivision_topology {
       sample_arc(B, by_u, t.first->position, at_p, arc.inner, root_side, f.sigma);
       arcs_.push_back(arc);
     }
-    for (const Pair& q : cc) {
-      const int root_side = (q.family == 1) == (f.sigma > 0) ? 1 : -1;
-      const bool second = q.a->vertical != by_u && q.b->vertical == by_u;  // anchor on a line x = const
-      const Crossing &a = second ? *q.b : *q.a, &b = second ? *q.a : *q.b;
-      Arc arc{node(a.vertical, a.c, a.index), node(b.vertical, b.c, b.index), {}, Parameter_box{B.u0, B.u1, B.v0, B.v1}, -1};
-      sample_arc(B, by_u, a.position, b.position, arc.inner, root_side, f.sigma);
-      arcs_.push_back(arc);
-    }
+    for (const Pair& q : cc) add_branch_arc(B, by_u, *q.a, *q.b, (q.family == 1) == (f.sigma > 0) ? 1 : -1, f.sigma);
     ++fold_boxes_;
     return true;
   }
@@ -1100,7 +1101,7 @@ class Subdivision_topology {
     bool screened = false;
     bool ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, &screened);
     if (!ok && screened && sharpen_grid(B)) ok = valley_exclusion(*B.fast, valley_strip_depth, &strips, nullptr);
-    work_ += double(strips) * (a_ + 1) * (b_ + 1) * std::max(1, a_ + b_) / 16;
+    charge_strips(strips);
     if (ok) ++valley_boxes_;
     return ok;
   }

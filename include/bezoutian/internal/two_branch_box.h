@@ -31,6 +31,7 @@
 #include <bezoutian/internal/double_interval.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -172,13 +173,6 @@ std::vector<T> binomials(int n) {
   return c;
 }
 
-// Where to cut a strip whose tests failed, in its local coordinate x in (0, 1) (floating point: a policy, the pieces
-// are then proved). The midpoint, unless the minimiser of sigma D lies on the box's edge y = e (e = 0 or 1) at one
-// end of the strip and inside the box at the other. Between the point where a branch leaves the box through y = e
-// (D = 0 there) and the point where the minimiser reaches that edge (D_y = 0 there), lines on the near side carry
-// D_y != 0 in the whole box and lines on the far side a negative value of sigma D next to y = e, so a cut in that
-// window lets both halves pass. The window is about (gap between the branches) / (their slope) wide: halving
-// would find it only after many steps.
 // Where, in the strip's local coordinate x, the minimiser of sigma D on the lines x = const reaches the box's edge
 // y = e, when it lies on that edge at one end of the strip and inside the box at the other (floating point: D_y = 0
 // on the edge there); NaN otherwise. `e` receives the edge.
@@ -195,6 +189,13 @@ double minimiser_exit(const Grid<N>& T, double y_left, double y_right, double& e
   return x > 0 && x < 1 ? x : nan;
 }
 
+// Where to cut a strip whose tests failed, in its local coordinate x in (0, 1) (floating point: a policy, the pieces
+// are then proved). The midpoint, unless the minimiser of sigma D lies on the box's edge y = e (e = 0 or 1) at one
+// end of the strip and inside the box at the other. Between the point where a branch leaves the box through y = e
+// (D = 0 there) and the point where the minimiser reaches that edge (D_y = 0 there), lines on the near side carry
+// D_y != 0 in the whole box and lines on the far side a negative value of sigma D next to y = e, so a cut in that
+// window lets both halves pass. The window is about (gap between the branches) / (their slope) wide: halving
+// would find it only after many steps.
 template <class N>
 double window_cut(const Grid<N>& T, int sigma, double y_left, double y_right) {
   double e = 0;
@@ -287,27 +288,10 @@ struct Valley_bound {
       const N q = quotient(h[k], cs1[k]);
       high = std::max(high, std::max(-lower(q), upper(q)));
     }
+    if (!(low > 0)) return false;
     // 2 L low - (ny high)^2 > 0, with L = ny (ny - 1) least
-    const N L = constant(N{}, least) * constant(N{}, double(ny) * (ny - 1));
-    auto proves = [&](double lo, double hi) {
-      const N H = constant(N{}, hi) * constant(N{}, double(ny));
-      return lo > 0 && lower(constant(N{}, 2) * L * constant(N{}, lo) - H * H) > 0;
-    };
-    if (proves(low, high)) return true;
-    // The segment along an edge y = e of the box, for a valley whose floor runs outside the box or leaves it
-    // (the minimisers on the strip's edges lie on y = e, or next to it). There y0 = e and only y - e of one sign
-    // (into the box) matters: sigma D(x, y) >= sigma D(x, e) - max(0, -sigma D_y(x, e) (into the box))^2 / (2L).
-    for (int edge = 0; edge < 2; ++edge) {
-      const int j = edge == 0 ? 0 : ny, inward = edge == 0 ? 1 : -1;
-      double lo = HUGE_VAL, out = 0;  // sigma D >= lo on the edge, max(0, -inward sigma D_y) / ny <= out
-      for (int i = 0; i <= nx; ++i) {
-        lo = std::min(lo, lower(s * T.at(i, j)));
-        const N d = edge == 0 ? T.at(i, 1) - T.at(i, 0) : T.at(i, ny) - T.at(i, ny - 1);
-        out = std::max(out, upper(constant(N{}, double(-inward * sigma)) * d));
-      }
-      if (proves(lo, out)) return true;
-    }
-    return false;
+    const N L = constant(N{}, least) * constant(N{}, double(ny) * (ny - 1)), H = constant(N{}, high) * constant(N{}, double(ny));
+    return lower(constant(N{}, 2) * L * constant(N{}, low) - H * H) > 0;
   }
 };
 
@@ -352,9 +336,9 @@ bool no_fold(const Grid<N>& S, int sigma, double x_from, double x_to, int max_de
 
 // True if D has no zero in the closed box (sigma D_yy > 0 there: the caller's test). On each piece X of the x-range
 // (halving, or a cut where the valley's floor leaves the box; down to `max_depth` times), D has one strict sign on the
-// strip X x [0, 1], or the strip is a valley of sigma D above 0 (Valley_bound). Two branches that become a complex pair (beyond the tips of a thin loop, a near miss
-// of two surfaces) leave such a valley, where D is small and positive: a plain sign test needs boxes about
-// sqrt(min D / D_yy) wide there.
+// strip X x [0, 1], or the strip is a valley of sigma D above 0 (Valley_bound). Two branches that become a complex
+// pair (beyond the tips of a thin loop, a near miss of two surfaces) leave such a valley, where D is small and
+// positive: a plain sign test needs boxes about sqrt(min D / D_yy) wide there.
 template <class N>
 bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   if (S.ny < 2) return false;
@@ -373,8 +357,9 @@ bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
     strip_grid(S, p.xa, p.xb, T, w);
     if (common_sign(T) != 0 || above(T, sigma, w)) continue;
     if (p.depth >= max_depth) return false;
-    // cut where the valley's floor leaves the box, if it does in this strip (then the chord serves one side and
-    // the edge the other), else halve
+    // cut where the valley's floor leaves the box, if it does in this strip, else halve: a chord with one end on the
+    // edge and the other on the floor follows neither, while on each side of the cut it follows one of them (the
+    // bound is exact for a quadratic in y whichever y0 it starts from, so a chord along the edge serves too)
     const auto [y_left, y_right] = edge_minimisers(T, sigma);
     double e = 0;
     const double x = minimiser_exit(T, y_left, y_right, e);
