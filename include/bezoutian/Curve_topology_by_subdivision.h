@@ -60,13 +60,13 @@
 // beyond the tips of a thin loop and where two surfaces pass close without meeting, D is small and positive along a
 // valley, and a sign test alone needs boxes about sqrt(min D / D_yy) wide there.
 //
-// A fold in one box (internal/fold_box.h): from depth options.fold_depth (16) on, such a box is resolved when D_yy keeps a
-// sign on it and it holds exactly one point p with D = D_y = 0, where D_x != 0 (proved on a thin strip around p,
-// where the least value of D on the lines x = const is strictly monotone, and by the two-branch fold test on the
-// rest). D = 0 turns back across the lines x = const at p: p ends one arc of each family, and the two arcs make one
-// arc of the curve through p, a regular point (a node of its own, so that the lifting's chained proofs start at the
-// crossings). At the tip of a loop of width w the tangent is vertical at p and horizontal about w^2 away; splitting
-// alone needs boxes w^2 wide there.
+// A fold in one box (internal/fold_box.h): from depth options.fold_depth (16) on, such a box is resolved when D_yy
+// keeps a sign on it and it holds exactly one point p with D = D_y = 0, where D_x != 0 (proved on a thin strip
+// around p, where the least value of D on the lines x = const is strictly monotone, and by the two-branch fold test
+// on the rest). D = 0 turns back across the lines x = const at p: p ends one arc of each family, and the two arcs
+// make one arc of the curve through p, a regular point (a node of its own, so that the lifting's chained proofs
+// start at the crossings). At the tip of a loop of width w the tangent is vertical at p and horizontal about w^2
+// away; splitting alone needs boxes w^2 wide there.
 //
 // Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
 // order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their
