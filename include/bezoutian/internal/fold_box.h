@@ -201,7 +201,7 @@ inline Fold_box fold_certificate(const Double_bernstein_grid& G, int max_depth =
     double x = 0, y = 0;
     if (!fold::locate(M, sigma, x, y)) continue;
     work += 64;  // the 32 lines and the bisection cost about 64 line evaluations, a strip grid each
-    const two_branch::Grid<Double_interval> S = two_branch::enclosure(M, rho);
+    two_branch::Grid<Double_interval> S;  // the proved enclosures, computed once the screen passes
     // Half-widths 2^-8, 2^-12, ..., 2^-40 with one window per strip, then with a staircase of 8: the first that passes
     // the plain-double screen is proved (if the proof fails on the grid's radius, the caller may retry on a sharper
     // grid). The rest of the x-range is halved at most e + 12 times: the strips next to the fold strip need about
@@ -222,6 +222,7 @@ inline Fold_box fold_certificate(const Double_bernstein_grid& G, int max_depth =
         }
         out.screened = true;
         ++proofs;
+        if (S.v.empty()) S = two_branch::enclosure(M, rho);
         std::size_t proof = 0;
         const bool ok = fold::fold_strip(S, sigma, W, side, proof) &&
                         two_branch::no_fold(S, sigma, 0, xa, depth, proof, true) &&

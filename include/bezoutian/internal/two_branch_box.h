@@ -34,6 +34,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <tuple>
 #include <vector>
 
 namespace bezoutian {
@@ -295,43 +297,57 @@ struct Valley_bound {
   }
 };
 
-// True if every line x = const of the strip [x_from, x_to] x [0, 1] (in the box's local coordinates) carries no
-// point with D = D_y = 0: by one of the three tests of the header comment (or, if `valley`, because the valley bound
-// proves D != 0 on the strip), on halves of the strip down to `max_depth` halvings. `strips` counts the strip grids
-// computed (the work).
-template <class N>
-bool no_fold(const Grid<N>& S, int sigma, double x_from, double x_to, int max_depth, std::size_t& strips,
-             bool valley = false) {
+// The strip search shared by the two certificates below: the strip [x_from, x_to] x [0, 1] (in the box's local
+// coordinates) passes if each of its pieces X passes `pass` (given the grid of X x [0, 1], restricted from S); a piece
+// that fails is cut at `cut` (a ratio in (0, 1), floating point: a policy) down to `max_depth` times. `strips` counts
+// the strip grids computed (the work).
+template <class N, class Pass, class Cut>
+bool strip_search(const Grid<N>& S, double x_from, double x_to, int max_depth, std::size_t& strips, Pass pass, Cut cut) {
   struct Piece {
     double xa, xb;
     int depth;
   };
   if (!(x_from < x_to)) return true;
-  const std::vector<N> cx = binomials<N>(S.nx), cy = binomials<N>(S.ny);
   std::vector<Piece> todo{{x_from, x_to, 0}};
   Grid<N> T{S.nx, S.ny, std::vector<N>(S.v.size())};
-  Valley_bound<N> above(S.nx, S.ny);
   std::vector<N> w;
   while (!todo.empty()) {
     const Piece p = todo.back();
     todo.pop_back();
     ++strips;
     strip_grid(S, p.xa, p.xb, T, w);
-    if (difference_sign_y(T) != 0 || common_sign(T) != 0) continue;
-    // the segment between the minimisers of sigma D on the strip's two edges x = xa and x = xb
-    const auto [y_left, y_right] = edge_minimisers(T, sigma);
-    const bool reversed = y_left > y_right;  // then run x backwards, so that the segment rises
-    const std::vector<N> g = on_segment(T, std::min(y_left, y_right), std::max(y_left, y_right), reversed, cx, cy, w);
-    bool negative = true;  // sigma D < 0 on the segment
-    for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
-    if (negative) continue;
-    if (valley && above(T, sigma, w)) continue;
+    if (pass(T)) continue;
     if (p.depth >= max_depth) return false;
-    const double m = p.xa + window_cut(T, sigma, y_left, y_right) * (p.xb - p.xa);
+    const double m = p.xa + cut(T) * (p.xb - p.xa);
     todo.push_back({m, p.xb, p.depth + 1});
     todo.push_back({p.xa, m, p.depth + 1});
   }
   return true;
+}
+
+// True if every line x = const of the strip [x_from, x_to] x [0, 1] carries no point with D = D_y = 0: by one of the
+// three tests of the header comment (or, if `valley`, because the valley bound proves D != 0 on the strip), on pieces
+// of the strip cut by window_cut down to `max_depth` times.
+template <class N>
+bool no_fold(const Grid<N>& S, int sigma, double x_from, double x_to, int max_depth, std::size_t& strips,
+             bool valley = false) {
+  const std::vector<N> cx = binomials<N>(S.nx), cy = binomials<N>(S.ny);
+  std::vector<N> w;
+  std::unique_ptr<Valley_bound<N>> above;
+  if (valley) above.reset(new Valley_bound<N>(S.nx, S.ny));
+  double y_left = 0, y_right = 0;  // the minimisers of the last piece tested, for its cut
+  auto pass = [&](const Grid<N>& T) {
+    if (difference_sign_y(T) != 0 || common_sign(T) != 0) return true;
+    // the segment between the minimisers of sigma D on the strip's two edges x = xa and x = xb
+    std::tie(y_left, y_right) = edge_minimisers(T, sigma);
+    const bool reversed = y_left > y_right;  // then run x backwards, so that the segment rises
+    const std::vector<N> g = on_segment(T, std::min(y_left, y_right), std::max(y_left, y_right), reversed, cx, cy, w);
+    bool negative = true;  // sigma D < 0 on the segment
+    for (const N& x : g) negative = negative && (sigma > 0 ? upper(x) < 0 : lower(x) > 0);
+    return negative || (above && (*above)(T, sigma, w));
+  };
+  auto cut = [&](const Grid<N>& T) { return window_cut(T, sigma, y_left, y_right); };
+  return strip_search(S, x_from, x_to, max_depth, strips, pass, cut);
 }
 
 // True if D has no zero in the closed box (sigma D_yy > 0 there: the caller's test). On each piece X of the x-range
@@ -342,32 +358,19 @@ bool no_fold(const Grid<N>& S, int sigma, double x_from, double x_to, int max_de
 template <class N>
 bool no_zero(const Grid<N>& S, int sigma, int max_depth, std::size_t& strips) {
   if (S.ny < 2) return false;
-  struct Piece {
-    double xa, xb;
-    int depth;
-  };
-  std::vector<Piece> todo{{0, 1, 0}};
-  Grid<N> T{S.nx, S.ny, std::vector<N>(S.v.size())};
   Valley_bound<N> above(S.nx, S.ny);
   std::vector<N> w;
-  while (!todo.empty()) {
-    const Piece p = todo.back();
-    todo.pop_back();
-    ++strips;
-    strip_grid(S, p.xa, p.xb, T, w);
-    if (common_sign(T) != 0 || above(T, sigma, w)) continue;
-    if (p.depth >= max_depth) return false;
-    // cut where the valley's floor leaves the box, if it does in this strip, else halve: a chord with one end on the
-    // edge and the other on the floor follows neither, while on each side of the cut it follows one of them (the
-    // bound is exact for a quadratic in y whichever y0 it starts from, so a chord along the edge serves too)
+  auto pass = [&](const Grid<N>& T) { return common_sign(T) != 0 || above(T, sigma, w); };
+  // cut where the valley's floor leaves the box, if it does in this strip, else halve: a chord with one end on the
+  // edge and the other on the floor follows neither, while on each side of the cut it follows one of them (the
+  // bound is exact for a quadratic in y whichever y0 it starts from, so a chord along the edge serves too)
+  auto cut = [&](const Grid<N>& T) {
     const auto [y_left, y_right] = edge_minimisers(T, sigma);
     double e = 0;
     const double x = minimiser_exit(T, y_left, y_right, e);
-    const double m = p.xa + (x > 1.0 / 64 && x < 63.0 / 64 ? x : 0.5) * (p.xb - p.xa);
-    todo.push_back({m, p.xb, p.depth + 1});
-    todo.push_back({p.xa, m, p.depth + 1});
-  }
-  return true;
+    return x > 1.0 / 64 && x < 63.0 / 64 ? x : 0.5;
+  };
+  return strip_search(S, 0, 1, max_depth, strips, pass, cut);
 }
 
 // The coefficients c (in y) of D on the line x = const of the grid M (floating point).
