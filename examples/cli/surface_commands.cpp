@@ -104,6 +104,28 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     comps.push_back(jc);
   }
   j["components"] = comps;
+  // sides of the box on D = 0 (collapsed edges, shared boundary curves): not part of the components above
+  json edges = json::array();
+  static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain"};
+  for (const auto& e : L.edge_lines) {
+    json pts = json::array(), partner = json::array(), p3 = json::array();
+    for (const auto& q : e.points) {
+      pts.push_back({q.projection[0], q.projection[1]});
+      partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
+      p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
+    }
+    edges.push_back({{"side", e.side},
+                     {"line", std::string(e.side % 2 == 1 ? "u" : (L.self_intersection ? "v" : "t")) + " = " + text(e.value)},
+                     {"cause", causes[int(e.cause)]},
+                     {"partner_side", e.partner_side},
+                     {"genuine", e.genuine},
+                     {"genuine_proved", e.status_proved},
+                     {"description", e.description},
+                     {"points", pts},
+                     {"partner_points", partner},
+                     {"points_3d", p3}});
+  }
+  j["edge_lines"] = edges;
   json sing = json::array(), bnd = json::array();
   for (const auto& v : T.vertices) {
     json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
@@ -199,7 +221,8 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
     << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
     << "," << u1 << "]x[" << v0 << "," << v1 << "]</text>\n";
   s << "<text x='" << pad << "' y='" << pad - 2 << "' font-size='10' font-family='sans-serif'>dashed grey: phantom; "
-    << "grey boxes: no genuine point; green diamond: a genuine part ends; orange triangle: pinch point</text>\n";
+    << "grey boxes: no genuine point; green diamond: a genuine part ends; orange triangle: pinch point; brown band: "
+    << "a side on D=0</text>\n";
   for (const auto& b : L.topology.excluded_regions)  // proved free of genuine points: hatched grey
     s << "<rect x='" << X(CGAL::to_double(b.u0)) << "' y='" << Y(CGAL::to_double(b.v1)) << "' width='"
       << X(CGAL::to_double(b.u1)) - X(CGAL::to_double(b.u0)) << "' height='"
@@ -216,6 +239,13 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
           << (g ? "" : " stroke-dasharray='4,3'") << "/>\n";
       }
     }
+  }
+  for (const auto& e : L.edge_lines) {  // sides of the box on D = 0: a thick band along the side
+    const auto& a = e.points.front().projection;
+    const auto& b = e.points.back().projection;
+    s << "<line x1='" << X(a[0]) << "' y1='" << Y(a[1]) << "' x2='" << X(b[0]) << "' y2='" << Y(b[1]) << "' stroke='"
+      << (e.genuine ? "#8c564b" : "#999999") << "' stroke-width='6' stroke-opacity='0.6'"
+      << (e.genuine ? "" : " stroke-dasharray='4,3'") << "/>\n";
   }
   for (const auto& v : L.topology.vertices) {
     if (v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated)
@@ -257,9 +287,12 @@ void write_obj(const std::string& path, const std::vector<const Patch*>& patches
     base += (N + 1) * (N + 1);
   }
   s << "o locus\n";
-  for (const auto& arc : L.arcs) {
+  std::vector<std::vector<bezoutian::Locus_point>> polylines;
+  for (const auto& arc : L.arcs) polylines.push_back(arc.points);
+  for (const auto& e : L.edge_lines) polylines.push_back(e.points);  // a collapsed side is one 3D point
+  for (const auto& points : polylines) {
     std::vector<std::size_t> ids;
-    for (const auto& q : arc.points) {
+    for (const auto& q : points) {
       if (!q.lifted || !q.genuine) {
         if (ids.size() > 1) {
           s << "l";
@@ -298,6 +331,7 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
       std::cout << " at " << c.first_0.to_double() << " = side " << side_name[c.side_second] << " of the second at "
                 << c.second_0.to_double() << "\n";
   }
+  for (const auto& e : L.edge_lines) std::cout << "edge line: " << e.description << "\n";
   const auto& T = L.topology;
   if (!L.topology_computed) {
     std::cout << "note: " << L.note << "\n";

@@ -15,6 +15,7 @@
 
 #include <bezoutian/Curve_intersection.h>
 #include <bezoutian/Curve_topology_by_subdivision.h>
+#include <bezoutian/internal/box_edge_lines.h>
 #include <bezoutian/internal/certified_lifting.h>
 #include <bezoutian/internal/double_partner_witness.h>
 #include <bezoutian/internal/floating_null_vector.h>
@@ -126,6 +127,30 @@ struct Locus_split_point {
   std::array<std::array<double, 2>, 4> box{};
 };
 
+/// A side of the box on which D vanishes identically: every point of it is a point of the projected locus. Its
+/// line's factor is removed from D before the topology, which describes the rest of D = 0 (whose boundary points
+/// on this side are where the rest meets it). The cause is decided exactly (internal/box_edge_lines.h): a collapsed
+/// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
+/// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
+/// the seam of a closed patch), both genuine at every point; or the side's fixed coordinate lies outside the
+/// partner domain (phantom at every point).
+struct Locus_edge_line {
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
+  int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
+  Rational value;  ///< the fixed coordinate of the side
+  Cause cause = unexplained;
+  /// collapsed / shared_curve: the side of the partner domain (boundary_curve order) whose iso-curve holds the
+  /// partner points; -1 for a self-intersection's collapsed side paired with itself
+  int partner_side = -1;
+  bool genuine = false;        ///< every point of the side has a partner in the partner domain (collapsed, shared_curve)
+  bool status_proved = false;  ///< `genuine` is proved for the whole side (every cause but unexplained)
+  std::string description;     ///< one line for people
+  /// samples along the side (samples_per_arc + 1, ends included): for a proved cause the partner comes from it (a
+  /// floating-point point of the partner iso-curve; status_proved set, partner_enclosure NaN); otherwise the lifting
+  /// of the arcs (floating point).
+  std::vector<Locus_point> points;
+};
+
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
@@ -138,6 +163,8 @@ struct Surface_locus {
   std::string note;  ///< why the topology was not computed, if it was not
   /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
   std::vector<Boundary_contact> contacts;
+  /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
+  std::vector<Locus_edge_line> edge_lines;
   /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
   /// is also a traced point of its arc.
   std::vector<Locus_split_point> split_points;
@@ -331,7 +358,15 @@ inline double distance3(const std::array<double, 3>& a, const std::array<double,
 // Computes the topology of the square-free D in the box unless D is constant (no locus: proved empty) or its
 // degree is above the limit; returns whether lifting should follow.
 inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_options& o) {
-  const Polynomial_2<Integer>& D = L.equation.square_free;
+  // the box's sides on D = 0 are reported apart (edge_lines); the subdivision cannot follow a curve along its edge
+  const Box_edge_lines lines = box_edge_lines(L.equation.square_free, o.box);
+  for (int side : lines.sides) {
+    Locus_edge_line e;
+    e.side = side;
+    e.value = side_value(o.box, side);
+    L.edge_lines.push_back(e);
+  }
+  const Polynomial_2<Integer>& D = lines.rest;
   L.topology.box = o.box;
   if (D.degree() <= 0 && D[0].degree() <= 0) {
     L.topology_computed = true;  // D is a nonzero constant: the locus is empty, proved
@@ -356,7 +391,15 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
              std::to_string(o.max_total_degree_for_topology) + "; the implicit equation D is exact";
     return false;
   }
-  L.topology = analyse_curve_in_box(D, o.box, o.tolerance, o.samples_per_arc);
+  try {
+    L.topology = analyse_curve_in_box(D, o.box, o.tolerance, o.samples_per_arc);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {  // CGAL's analysis signals degenerate input by exceptions of its own (e.g. Zero_resultant_exception)
+    L.note = "the certified topology of D = 0 was not computed: the subdivision did not certify it (" + sub.reason +
+             ") and CGAL's curve analysis failed on it; the implicit equation D is exact";
+    return false;
+  }
   L.topology_computed = true;
   L.topology_method = "curve analysis";
   if (L.note.empty()) L.note = "subdivision: " + sub.reason + "; topology by CGAL's curve analysis";
@@ -386,6 +429,98 @@ inline bool verified(const Locus_point& q) {
   const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
                                      q.point_3d[2] * q.point_3d[2]);
   return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
+}
+
+// The parameter in [0,1] of the point of C nearest to X (floating point: it only places a traced point).
+inline double nearest_parameter(const Rational_bezier_curve_3<Rational>& C, const std::array<double, 3>& X) {
+  auto d2 = [&](double t) {
+    const auto p = C.evaluate(t);
+    return (p[0] - X[0]) * (p[0] - X[0]) + (p[1] - X[1]) * (p[1] - X[1]) + (p[2] - X[2]) * (p[2] - X[2]);
+  };
+  const int n = 256;
+  int best = 0;
+  for (int i = 1; i <= n; ++i)
+    if (d2(double(i) / n) < d2(double(best) / n)) best = i;
+  double a = std::max(0.0, double(best - 1) / n), b = std::min(1.0, double(best + 1) / n);
+  for (int it = 0; it < 60; ++it) {  // golden section on the bracket
+    const double m1 = b - (b - a) * 0.6180339887498949, m2 = a + (b - a) * 0.6180339887498949;
+    if (d2(m1) < d2(m2)) b = m2; else a = m1;
+  }
+  return 0.5 * (a + b);
+}
+
+// The box's sides on D = 0 (found by topology_is_affordable): their cause (internal/box_edge_lines.h) and sample
+// points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
+// exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
+template <class Lift>
+void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o,
+                         const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>* psi,
+                         Lift lift_point) {
+  const Parameter_box& b = o.box;
+  const Parameter_box& d = o.partner_domain;
+  const char* names[2][4] = {{"v", "u", "v", "u"}, {"t", "u", "t", "u"}};
+  for (Locus_edge_line& e : L.edge_lines) {
+    const Edge_line_explanation x = explain_edge_line(e.side, b, d, o.partner_domain_unbounded, phi, psi);
+    const bool vertical = side_is_vertical(e.side);
+    e.cause = Locus_edge_line::Cause(int(x.cause));
+    e.partner_side = x.partner_side;
+    e.genuine = x.cause == Edge_line_explanation::collapsed || x.cause == Edge_line_explanation::shared_curve;
+    e.status_proved = x.cause != Edge_line_explanation::unexplained;
+    const std::string line = std::string(names[psi ? 1 : 0][e.side]) + " = " + std::to_string(CGAL::to_double(e.value));
+    switch (x.cause) {
+      case Edge_line_explanation::collapsed:
+        e.description = "the side " + line + " lies on D = 0: a collapsed edge (one 3D point), genuine";
+        break;
+      case Edge_line_explanation::shared_curve:
+        e.description = "the side " + line + " lies on D = 0: a boundary curve shared with side " +
+                        std::to_string(x.partner_side) + " of the partner domain, genuine";
+        break;
+      case Edge_line_explanation::outside_domain:
+        e.description = "the side " + line + " lies on D = 0, outside the partner domain: phantom";
+        break;
+      default:
+        e.description = "the side " + line + " lies on D = 0; its status is not proved";
+    }
+    const int n = std::max(1, o.samples_per_arc);
+    const double c = CGAL::to_double(e.value);
+    const double f0 = CGAL::to_double(vertical ? b.v0 : b.u0), f1 = CGAL::to_double(vertical ? b.v1 : b.u1);
+    const bool own_point = e.genuine && is_point_curve(x.own);
+    for (int i = 0; i <= n; ++i) {
+      const double tau = double(i) / n, f = f0 + tau * (f1 - f0);
+      const double u = vertical ? c : f, v = vertical ? f : c;
+      if (!e.genuine) {
+        Locus_point q = lift_point(u, v, nullptr);
+        if (e.status_proved) q.genuine = false, q.status_proved = true;  // outside the domain: phantom, proved
+        e.points.push_back(q);
+        continue;
+      }
+      // the pair (P on C, Q on M): C is the side's own iso-curve over the partner domain, M the partner's at the
+      // fixed coordinate cp; for a collapsed C paired with itself (partner_side -1) Q is the sample's own point
+      const double o0 = CGAL::to_double(vertical ? d.v0 : d.u0), o1 = CGAL::to_double(vertical ? d.v1 : d.u1);
+      const double cp = x.partner_side < 0 ? c : CGAL::to_double(side_value(d, x.partner_side));
+      const double sigma = own_point ? (std::fabs(f - o0) > std::fabs(f - o1) ? 0.0 : 1.0)
+                                     : nearest_parameter(x.own, x.other.evaluate(tau));
+      const double g = o0 + sigma * (o1 - o0);  // the free coordinate of P on C
+      Locus_point q;
+      q.projection = {u, v};
+      q.lifted = true;
+      if (psi) {  // intersection: first (u, v) on phi, second (s, t) on psi
+        q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+        q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+        q.partner = {q.first[1], q.second[0]};
+        q.point_3d = phi.evaluate(q.first[0], q.first[1]);
+        q.residual = distance3(q.point_3d, psi->evaluate(q.second[0], q.second[1]));
+      } else {  // self-intersection: first (u, v + k), second (u + l, v)
+        q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+        q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+        q.partner = {q.second[0] - u, q.first[1] - v};
+        q.point_3d = phi.evaluate(q.second[0], q.second[1]);
+        q.residual = distance3(phi.evaluate(q.first[0], q.first[1]), q.point_3d);
+      }
+      q.genuine = q.status_proved = true;
+      e.points.push_back(q);
+    }
+  }
 }
 
 // The certified crossing that a split point reports (its side and proved box).
@@ -536,8 +671,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   } else {
     L.pinch_points_note = "not searched (pinch_point_boxes = 0)";
   }
-  if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch))))
-    return L;
+  const bool traced = internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch)));
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
   auto lift_point = [&](double u, double v, const std::array<double, 2>* guess) {
@@ -587,6 +721,13 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
                              (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
   };
+  internal::describe_edge_lines(L, o, patch, nullptr, lift_point);
+  for (const Locus_edge_line& e : L.edge_lines)  // the rank-1 points of a collapsed side are not isolated
+    if (e.cause == Locus_edge_line::collapsed && o.pinch_point_boxes > 0 && !L.pinch_points_complete)
+      L.pinch_points_note += "; the box side " + std::string(e.side % 2 ? "u" : "v") + " = " +
+                             std::to_string(CGAL::to_double(e.value)) +
+                             " is a collapsed edge, along which the Jacobian has rank <= 1 everywhere";
+  if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
@@ -685,8 +826,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
                         "are not generic in the sense of Theorems 2-3");
-  if (!internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi))))
-    return L;
+  const bool traced =
+      internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)));
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
   auto lift_point = [&](double u, double t, const std::array<double, 2>* guess) {
@@ -735,6 +876,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
                 (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
     return q;
   };
+  internal::describe_edge_lines(L, o, phi, &psi, lift_point);
+  if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);

@@ -994,3 +994,121 @@ TEST_CASE("two nearly tangent surfaces: the statuses along the thin loop are pro
   CHECK(points > 1000);
   CHECK(proved >= points * 99 / 100);
 }
+
+namespace {
+// |Phi(first) - Psi(second)| of a traced point, evaluated here (not the residual the library reports)
+double pair_distance(const Patch& phi, const Patch& psi, const Locus_point& q) {
+  const auto a = phi.evaluate(q.first[0], q.first[1]), b = psi.evaluate(q.second[0], q.second[1]);
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+const Locus_edge_line* edge_line(const Surface_locus& L, int side) {
+  for (const auto& e : L.edge_lines)
+    if (e.side == side) return &e;
+  return nullptr;
+}
+}  // namespace
+
+// The bottom of the teapot is a surface of revolution cut into four 90-degree sectors (patches 28-31); each has its
+// row 0 collapsed to the pole (0, 0, 0) and shares its side v = 1 with the next sector's side v = 0
+// (teapot32_topology.txt: "28(bottom).col3 (v=1) == 29(bottom).col0 (v=0)", "row 0 collapsed to point (0, 0, 0)").
+// So in the (u, t) plane of 28 and 29, D = 0 contains the box side t = 0 (the shared curve: the partner is 28's
+// side v = 1) and the side u = 0 (the pole: 29's row 0, s = 0, is the same point). Two sectors meet nowhere else:
+// no traced point of the rest of D = 0 may be genuine. Opposite sectors (28 and 30) share only the pole.
+TEST_CASE("teapot: sectors meeting at the pole: the collapsed and the shared sides are edge lines",
+          "[surface][teapot][edge]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  for (int partner : {29, 30}) {
+    INFO("patches 28, " << partner);
+    const Patch &phi = doc.patches[28], &psi = doc.patches[std::size_t(partner)];
+    const Surface_locus L = intersection_locus(phi, psi);
+    CHECK(L.topology_method == "subdivision");
+    REQUIRE(L.edge_lines.size() == (partner == 29 ? 2u : 1u));
+    const Locus_edge_line* pole = edge_line(L, 3);  // u = 0
+    REQUIRE(pole);
+    CHECK(pole->cause == Locus_edge_line::collapsed);
+    CHECK(pole->partner_side == 3);  // the partner's s = 0
+    CHECK(pole->genuine);
+    CHECK(pole->status_proved);
+    for (const auto& q : pole->points) {
+      CHECK(q.point_3d == std::array<double, 3>{0, 0, 0});
+      CHECK(pair_distance(phi, psi, q) == 0);
+    }
+    if (partner == 29) {
+      const Locus_edge_line* seam = edge_line(L, 0);  // t = 0
+      REQUIRE(seam);
+      CHECK(seam->cause == Locus_edge_line::shared_curve);
+      CHECK(seam->partner_side == 2);  // the first patch's v = 1
+      CHECK(seam->status_proved);
+      REQUIRE(seam->points.size() == 25);
+      for (const auto& q : seam->points) {
+        CHECK(q.first[1] == 1);
+        CHECK(q.second[1] == 0);
+        CHECK(std::fabs(q.first[0] - q.second[0]) < 1e-9);  // the same row of control points: the same parameter
+        CHECK(pair_distance(phi, psi, q) < 1e-12);
+      }
+    }
+    for (const auto& arc : L.arcs)
+      for (const auto& q : arc.points) CHECK_FALSE(q.genuine);
+  }
+}
+
+// A (2,2) polynomial patch whose column 2 (the side v = 1) is collapsed to (1, 2, 3): every pair of points of that
+// side is a double point, so D vanishes on the whole side. Before the side was taken out of D, CGAL's curve analysis
+// of D and the box line threw (the two share a component) and ended the program.
+TEST_CASE("self-intersection: a collapsed side is an edge line, the rest of the locus is certified", "[surface][edge]") {
+  const std::vector<std::vector<Patch::Point>> net = {{{Q(-2), Q(4), Q(3)}, {Q(-3), Q(0), Q(4)}, {Q(1), Q(2), Q(3)}},
+                                                      {{Q(-4), Q(4), Q(-5)}, {Q(2), Q(-1), Q(3)}, {Q(1), Q(2), Q(3)}},
+                                                      {{Q(3), Q(3), Q(2)}, {Q(1), Q(5), Q(-3)}, {Q(1), Q(2), Q(3)}}};
+  const Patch phi(net);
+  const Surface_locus L = self_intersection_locus(phi);
+  CHECK(L.topology_method == "subdivision");
+  REQUIRE(L.edge_lines.size() == 1);
+  const Locus_edge_line& e = L.edge_lines[0];
+  CHECK(e.side == 2);
+  CHECK(e.value == 1);
+  CHECK(e.cause == Locus_edge_line::collapsed);
+  CHECK(e.partner_side == -1);
+  CHECK(e.genuine);
+  for (const auto& q : e.points) {
+    CHECK(q.point_3d == std::array<double, 3>{1, 2, 3});
+    CHECK(q.first[1] == 1);
+    CHECK(q.second[1] == 1);
+    CHECK(q.first[0] != q.second[0]);  // two distinct points of the side
+    CHECK(pair_distance(phi, phi, q) < 1e-14);
+  }
+  // the rest still ends on the side: its boundary points on v = 1
+  std::size_t on_side = 0;
+  for (const auto& v : L.topology.vertices) on_side += v.on_boundary && v.v_lo <= 1 && 1 <= v.v_hi;
+  CHECK(on_side >= 1);
+  // the pinch-point search cannot be complete (the whole side has rank <= 1) and says why
+  CHECK_FALSE(L.pinch_points_complete);
+  CHECK(L.pinch_points_note.find("collapsed edge") != std::string::npos);
+}
+
+// A closed patch: Phi(u, v) = ((1 + v) x(u), (1 + v) y(u), v + x(u)) with the teardrop cubic (x, y) of control
+// points (0,0), (4,4), (-4,4), (0,0), so Phi(0, v) = Phi(1, v) = (0, 0, v): the sides u = 0 and u = 1 are one seam,
+// each the partner of the other (l = +-1, k = 0).
+TEST_CASE("self-intersection: the seam of a closed patch is a pair of edge lines", "[surface][edge]") {
+  const int X[4] = {0, 4, -4, 0}, Y[4] = {0, 4, 4, 0};
+  std::vector<std::vector<Patch::Point>> net(4, std::vector<Patch::Point>(2));
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 2; ++j) net[i][j] = {Q(X[i] * (1 + j)), Q(Y[i] * (1 + j)), Q(j + X[i])};
+  const Patch phi(net);
+  const Surface_locus L = self_intersection_locus(phi);
+  CHECK(L.topology_method == "subdivision");
+  REQUIRE(L.edge_lines.size() == 2);
+  for (int side : {1, 3}) {
+    const Locus_edge_line* e = edge_line(L, side);
+    REQUIRE(e);
+    CHECK(e->cause == Locus_edge_line::shared_curve);
+    CHECK(e->partner_side == 4 - side);
+    CHECK(e->genuine);
+    for (const auto& q : e->points) {
+      CHECK(std::fabs(q.partner[0]) == 1);
+      CHECK(std::fabs(q.partner[1]) < 1e-9);
+      CHECK(std::fabs(q.point_3d[2] - q.projection[1]) < 1e-9);  // the seam point (0, 0, v)
+      CHECK(pair_distance(phi, phi, q) < 1e-12);
+    }
+  }
+}

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <bezoutian/Curve_topology_by_subdivision.h>
+#include <bezoutian/internal/box_edge_lines.h>
 #include <bezoutian/internal/interval_krawczyk.h>
 
 using namespace bezoutian;
@@ -638,4 +639,40 @@ TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "
   // point's rounding uncertainty, cuts that keep the node inside its box, the two-branch fold test cut where the
   // minimiser leaves the box, and the double-double retry (before: not certified from about 3e-3 rad on).
   CHECK(check_parabola_nodes(14).two_branch_boxes > 0);
+}
+
+// The box sides on D = 0 are found exactly and their factors removed: D = u (v - 1) (4u^2 + 4v^2 - 1).
+TEST_CASE("box edge lines: the factors of the box sides on D = 0 are removed", "[subdivision][edge]") {
+  const P2 u = CGAL::shift(P2(1), 1, 0), v = CGAL::shift(P2(1), 1, 1);
+  const P2 circle = 4 * u * u + 4 * v * v - 1;
+  const P2 D = u * (v - 1) * circle;
+  const internal::Box_edge_lines a = internal::box_edge_lines(D, Parameter_box{});
+  CHECK(a.sides == std::vector<int>{2, 3});  // v = 1, u = 0
+  CHECK(a.rest == normalized_primitive_part(circle));
+  // u = 0 inside the box [-1, 1] x [0, 1] is not a side: only v = 1 is removed
+  const internal::Box_edge_lines b = internal::box_edge_lines(D, Parameter_box{Q(-1), Q(1), Q(0), Q(1)});
+  CHECK(b.sides == std::vector<int>{2});
+  CHECK(b.rest == normalized_primitive_part(u * circle));
+  // rational sides: u = 1/3 of the box [1/3, 1] x [0, 1/2]
+  const P2 E = (3 * u - 1) * (2 * v - 1) * circle;
+  const internal::Box_edge_lines c = internal::box_edge_lines(E, Parameter_box{Q(1, 3), Q(1), Q(0), Q(1, 2)});
+  CHECK(c.sides == std::vector<int>{2, 3});
+  CHECK(c.rest == normalized_primitive_part(circle));
+  CHECK(internal::box_edge_lines(circle, Parameter_box{}).sides.empty());
+}
+
+TEST_CASE("box edge lines: a curve or a point lies on a curve, decided exactly", "[subdivision][edge]") {
+  using C3 = Rational_bezier_curve_3<Rational>;
+  using P = C3::Point;
+  const C3 C(std::vector<P>{{Q(0), Q(0), Q(0)}, {Q(1), Q(2), Q(0)}, {Q(2), Q(0), Q(1)}}, {Q(1), Q(2), Q(1)});
+  auto point = [](const P& p) { return C3(std::vector<P>{p, p}, {Q(1), Q(1)}); };
+  CHECK(internal::lies_on(point(C(Q(1, 3))), C));
+  CHECK(internal::lies_on(point(C(Q(0))), C));
+  CHECK_FALSE(internal::lies_on(point(C(Q(3, 2))), C));  // on the curve's extension beyond [0, 1]
+  CHECK_FALSE(internal::lies_on(point({Q(1), Q(1), Q(1)}), C));
+  CHECK(internal::lies_on(C.restriction(Q(1, 4), Q(3, 4)), C));
+  CHECK(internal::lies_on(C.reversed(), C));
+  CHECK_FALSE(internal::lies_on(C, C.restriction(Q(1, 4), Q(3, 4))));  // only half of C is covered
+  CHECK_FALSE(internal::lies_on(C, point(C(Q(1, 2)))));
+  CHECK(internal::lies_on(point(C(Q(1, 2))), point(C(Q(1, 2)))));
 }
