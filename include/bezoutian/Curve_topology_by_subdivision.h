@@ -87,6 +87,7 @@
 #include <bezoutian/Curve_topology.h>
 #include <bezoutian/Error.h>
 #include <bezoutian/Root_isolation.h>
+#include <bezoutian/internal/corner_blowup.h>
 #include <bezoutian/internal/double_bernstein_grid.h>
 #include <bezoutian/internal/double_double_bernstein.h>
 #include <bezoutian/internal/fold_box.h>
@@ -221,6 +222,7 @@ class Subdivision_topology {
     // only enough bits to separate the values met near the curve: 144 bits, much cheaper than root_prec_
     prec_ = std::min<mpfr_prec_t>(root_prec_, 144);
     for (const Known_multiple_point& k : o_.multiple_points) multiple_.push_back(Multiple_point{k, nullptr, false});
+    add_singular_corners();
   }
 
   Subdivision_topology_result run() {
@@ -759,6 +761,9 @@ class Subdivision_topology {
       const Algebraic_real& x = L.roots[k].root;
       const int cl = x.compare(lo), ch = x.compare(hi);
       if (cl < 0 || ch > 0) continue;
+      if (singular_corner_ && (cl == 0 || ch == 0) && (vertical ? c == singular_corner_->u0 : c == singular_corner_->v0) &&
+          x.compare(vertical ? singular_corner_->v0 : singular_corner_->u0) == 0)
+        continue;  // the singular corner being resolved (resolve_corner) is not a crossing
       if (L.roots[k].multiplicity > 1) {
         // at a domain corner, on an edge across which the box is simple: the curve is tangent to that edge at the
         // corner, decided by corner_crossing
@@ -1112,6 +1117,7 @@ class Subdivision_topology {
     bool isolated;
     int half_branches;  // arcs that end at p (0 for an isolated point)
     bool fold = false;  // a regular point of the curve where it turns back across the lines x = const (fold_box.h)
+    bool on_boundary = false;  // a singular point at a domain corner (resolve_corner)
   };
 
   // Bernstein range (hull of the coefficients) on the box of d^2 D / dx^(2-k) dy^k in the box's local
@@ -1512,6 +1518,7 @@ class Subdivision_topology {
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
+            !(singular_corner_ && *cu == singular_corner_->u0 && *cv == singular_corner_->v0) &&
             !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
           return false;
     return true;
@@ -1556,7 +1563,31 @@ class Subdivision_topology {
     Known_multiple_point known;
     std::shared_ptr<const Multiple_point_blowup> blowup;  // Taylor coefficients at the enclosure, on first use
     bool refuted;  // a coefficient of order < multiplicity is proved nonzero: the point is ignored
+    bool corner = false;  // a singular point of D = 0 at a corner of the domain (the enclosure is that corner)
+    std::shared_ptr<const Corner_blowup> corner_blowup;  // its weighted blow-up into the domain (corner_blowup.h)
   };
+
+  // The domain's corners where D = 0 is singular (D, D_u, D_v vanish exactly), with the order of D there: where
+  // two patches of one smooth surface touch at a corner, D = 0 is singular at that corner of the (u, t) box.
+  void add_singular_corners() {
+    for (const Rational* cu : {&box_.u0, &box_.u1})
+      for (const Rational* cv : {&box_.v0, &box_.v1}) {
+        const auto e = exact_jet(*cu, *cv);
+        if (e[0] != 0 || e[1] != 0 || e[2] != 0) continue;
+        const int max_order = std::min(12, a_ + b_);
+        for (int order = 2; order <= max_order; ++order) {
+          bool zero = true;
+          for (int i = 0; i <= order && zero; ++i) zero = CGAL::is_zero(taylor_coefficient(*cu, *cv, i, order - i));
+          if (zero) continue;
+          Multiple_point m{Known_multiple_point{Parameter_box{*cu, *cu, *cv, *cv}, order}, nullptr, false};
+          m.corner = true;
+          m.corner_blowup = std::make_shared<const Corner_blowup>(taylor_coefficients(*cu, *cv), *cu == box_.u0 ? 1 : -1,
+                                                                  *cv == box_.v0 ? 1 : -1);
+          multiple_.push_back(m);
+          break;
+        }
+      }
+  }
 
   // A multiple point of D (order >= 3) at the simplest rational point of B (denominators below 2^20), proved by
   // exact Taylor coefficients, added to the known multiple points; its index, or -1. Symmetric and constructed
@@ -1577,6 +1608,19 @@ class Subdivision_topology {
         }
     return -1;
   }
+  // All the coefficients c[i][j] of (u - ru)^i (v - rv)^j in D, exactly (Taylor shift by Horner steps).
+  std::vector<std::vector<Rational>> taylor_coefficients(const Rational& ru, const Rational& rv) const {
+    std::vector<std::vector<Rational>> c(std::size_t(a_ + 1), std::vector<Rational>(std::size_t(b_ + 1), Rational(0)));
+    for (int j = 0; j <= b_; ++j)
+      for (int i = 0; !CGAL::is_zero(D_[j]) && i <= D_[j].degree(); ++i) c[i][j] = Rational(D_[j][i]);
+    for (int j = 0; j <= b_; ++j)
+      for (int s = 0; s < a_; ++s)
+        for (int i = a_ - 1; i >= s; --i) c[i][j] += ru * c[i + 1][j];
+    for (int i = 0; i <= a_; ++i)
+      for (int s = 0; s < b_; ++s)
+        for (int j = b_ - 1; j >= s; --j) c[i][j] += rv * c[i][j + 1];
+    return c;
+  }
   // The coefficient of (u - ru)^i (v - rv)^j in D, exactly.
   Rational taylor_coefficient(const Rational& ru, const Rational& rv, int i, int j) const {
     if (i > a_ || j > b_) return Rational(0);
@@ -1595,10 +1639,15 @@ class Subdivision_topology {
     return r;
   }
 
-  // The known multiple point whose enclosure lies strictly inside B, or -1.
+  // The known multiple point whose enclosure lies strictly inside B (or a singular domain corner that is a corner of
+  // B), or -1.
   int multiple_point_in(const Box& B) const {
     for (std::size_t m = 0; m < multiple_.size(); ++m) {
       const Parameter_box& K = multiple_[m].known.enclosure;
+      if (multiple_[m].corner) {  // a domain corner: in B iff it is a corner of B
+        if ((K.u0 == B.u0 || K.u0 == B.u1) && (K.v0 == B.v0 || K.v0 == B.v1)) return int(m);
+        continue;
+      }
       if (B.u0 < K.u0 && K.u1 < B.u1 && B.v0 < K.v0 && K.v1 < B.v1) return int(m);
     }
     return -1;
@@ -1613,6 +1662,7 @@ class Subdivision_topology {
     Multiple_point& mp = multiple_[index];
     if (mp.refuted) return false;
     const Parameter_box& K = mp.known.enclosure;
+    if (mp.corner) return resolve_corner(B, mp);
     if (!mp.blowup) {
       mp.blowup = std::make_shared<const Multiple_point_blowup>(D_, K, mp.known.multiplicity,
                                                                 root_prec_ + mpfr_prec_t(bits_) + 128);
@@ -1645,6 +1695,52 @@ class Subdivision_topology {
     const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
     connect_to_point(B, cr, node_singular(singular_.size() - 1),
                      CGAL::to_double(((K.u0 + K.u1) / 2 - B.u0) / wu), CGAL::to_double(((K.v0 + K.v1) / 2 - B.v0) / wv));
+    return true;
+  }
+
+  // Box B at a singular domain corner p (a corner of B): the same argument in the quadrant B of p. The weighted
+  // blow-up (internal/corner_blowup.h) proves H half-branches of D = 0 leaving p into B and grad D != 0 on the
+  // rectangle R = [0, L0^w] x [0, L0^v] of the quadrant minus p; grad D != 0 on the rest of B; D = 0 crosses
+  // the edges of B (p excluded) exactly H times. Components of (D = 0) \ {p} in B are arcs with ends on the edges
+  // of B or at p (no closed curve: the disc it bounds, inside B, would hold an extremum of D; neither a loop
+  // through p, for the same reason), so the H half-branches end at H distinct crossings and use them all: D = 0 in
+  // B is the H arcs from p. p is a point of the locus on the domain's boundary with H branches into the domain
+  // (H = 0: the curve passes p from outside, an isolated point of the locus in the domain).
+  bool resolve_corner(Box& B, Multiple_point& mp) {
+    const Parameter_box& K = mp.known.enclosure;
+    const Corner_blowup& blowup = *mp.corner_blowup;
+    if (!blowup.valid()) return false;
+    const int sx = K.u0 == B.u0 ? 1 : -1, sy = K.v0 == B.v0 ? 1 : -1;
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    // the rectangle [0, L0^w] x [0, L0^v] of the blow-up, L0 = 2^e: first one that covers B
+    auto extent = [](int e, int weight) {  // 2^(e weight), exactly
+      Rational r(1);
+      for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
+      return r;
+    };
+    int e = int(std::ceil(std::max(std::log2(CGAL::to_double(wu)) / blowup.weight_x(),
+                                   std::log2(CGAL::to_double(wv)) / blowup.weight_y())));
+    while (extent(e, blowup.weight_x()) < wu || extent(e, blowup.weight_y()) < wv) ++e;
+    int half = -1;
+    for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
+      half = blowup.half_branches(e);
+      if (half < 0) e -= attempt == 0 ? 1 : 2;
+    }
+    if (half < 0) return false;
+    const Rational rx = extent(e, blowup.weight_x()), ry = extent(e, blowup.weight_y());
+    std::vector<Crossing> cr;
+    std::vector<std::size_t> isolated_corners;
+    singular_corner_ = &K;
+    const bool ok = crossings_around(B, cr, isolated_corners);
+    singular_corner_ = nullptr;
+    if (!ok || cr.size() != std::size_t(half)) return false;
+    if ((rx < wu || ry < wv) && !no_critical_point_outside(B, Parameter_box{K.u0 - rx, K.u0 + rx, K.v0 - ry, K.v0 + ry}))
+      return false;
+    Singular_point p{K.u0, K.u1, K.v0, K.v1, half == 0, half};
+    p.on_boundary = true;
+    singular_.push_back(p);
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
+    connect_to_point(B, cr, node_singular(singular_.size() - 1), sx > 0 ? 0 : 1, sy > 0 ? 0 : 1);
     return true;
   }
 
@@ -1848,6 +1944,7 @@ class Subdivision_topology {
       v.v = 0.5 * (v.v_lo + v.v_hi);
       v.kind = p.fold ? Curve_topology_vertex::regular
                       : (p.isolated ? Curve_topology_vertex::isolated : Curve_topology_vertex::singular);
+      v.on_boundary = p.on_boundary;
       return v;
     }
     const Line& L = lines_.at(std::make_pair(k.vertical, k.c));
@@ -2035,6 +2132,7 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Multiple_point> multiple_;
+  const Parameter_box* singular_corner_ = nullptr;  // set while resolve_corner collects the crossings around it
   std::set<std::pair<Rational, Rational>> rational_points_tested_;
   static constexpr int rational_multiple_depth = 8;  // from this depth on, boxes look for rational multiple points
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
