@@ -81,6 +81,12 @@
 // Multiple points at small rationals are found without the caller: from depth 8 on, a box that resists the
 // other tests tries the simplest rational point inside it (denominators below 2^20); if D's exact Taylor
 // coefficients there vanish below some order k >= 3, the point is added as a known multiple point.
+//
+// Singular points at the domain's corners (D, D_u, D_v vanish exactly at a corner: two patches of one smooth surface
+// touching at a corner give a cusp there, tangent to a side) are known multiple points too. The box at the corner
+// is resolved when the weighted blow-up of internal/corner_blowup.h (Newton polygon with one compact edge) proves H
+// half-branches leaving the corner into the box and grad D != 0 on its rectangle minus the corner, grad D != 0 on the
+// rest of the box, and D = 0 crosses the box's edges (the corner excluded) exactly H times (resolve_corner).
 #ifndef BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 #define BEZOUTIAN_CURVE_TOPOLOGY_BY_SUBDIVISION_H
 
