@@ -687,59 +687,48 @@ const Curve_topology_vertex* vertex_at(const Curve_topology_in_box& t, double uu
     if (x.u_lo <= uu + 1e-12 && uu - 1e-12 <= x.u_hi && x.v_lo <= vv + 1e-12 && vv - 1e-12 <= x.v_hi) return &x;
   return nullptr;
 }
+// D = 0 is one arc from the singular corner c into the unit square, leaving it at the boundary point x
+void check_corner_arc(const P2& D, std::array<double, 2> c, std::array<double, 2> x) {
+  auto r = subdivide_curve_in_box(D, Parameter_box{});
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.components.size() == 1);
+  CHECK(r.topology.vertices.size() == 2);
+  const auto* p = vertex_at(r.topology, c[0], c[1]);
+  REQUIRE(p);
+  CHECK(p->kind == Curve_topology_vertex::singular);
+  CHECK(p->on_boundary);
+  CHECK(p->branches == 1);
+  const auto* q = vertex_at(r.topology, x[0], x[1]);
+  REQUIRE(q);
+  CHECK(q->kind == Curve_topology_vertex::boundary);
+  check_samples(D, r.topology, 1e-9);
+}
+// D = 0 meets the unit square only at its corner c (the curve passes it from outside)
+void check_corner_alone(const P2& D, std::array<double, 2> c) {
+  auto r = subdivide_curve_in_box(D, Parameter_box{});
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.vertices.size() == 1);
+  CHECK(r.topology.vertices[0].kind == Curve_topology_vertex::isolated);
+  CHECK(r.topology.vertices[0].on_boundary);
+  CHECK(r.topology.vertices[0].u == c[0]);
+  CHECK(r.topology.vertices[0].v == c[1]);
+}
 }  // namespace
 
 TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an edge, nodes)", "[topology][subdivision][corner]") {
   SECTION("cusp (u - 1)^2 = 2 v^3 at the corner (1, 0): one branch into the square, leaving it at (0, 2^(-1/3))") {
-    const P2 D = (u - 1) * (u - 1) - 2 * v * v * v;
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    REQUIRE(r.topology.components.size() == 1);
-    CHECK(r.topology.vertices.size() == 2);
-    const auto* p = vertex_at(r.topology, 1, 0);
-    REQUIRE(p);
-    CHECK(p->kind == Curve_topology_vertex::singular);
-    CHECK(p->on_boundary);
-    CHECK(p->branches == 1);
-    const auto* q = vertex_at(r.topology, 0, std::cbrt(0.5));
-    REQUIRE(q);
-    CHECK(q->kind == Curve_topology_vertex::boundary);
-    check_samples(D, r.topology, 1e-9);
+    check_corner_arc((u - 1) * (u - 1) - 2 * v * v * v, {1, 0}, {0, std::cbrt(0.5)});
   }
   SECTION("cusp (u - 1)^2 = -2 v^3: it opens away from the square, the corner alone is on the locus") {
-    const P2 D = (u - 1) * (u - 1) + 2 * v * v * v;
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    REQUIRE(r.topology.vertices.size() == 1);
-    CHECK(r.topology.vertices[0].kind == Curve_topology_vertex::isolated);
-    CHECK(r.topology.vertices[0].on_boundary);
-    CHECK(r.topology.vertices[0].u == 1);
-    CHECK(r.topology.vertices[0].v == 0);
+    check_corner_alone((u - 1) * (u - 1) + 2 * v * v * v, {1, 0});
   }
-  SECTION("cusp v^2 = u^3 at (0, 0), tangent to the edge v = 0: one branch, leaving at (1, 1)'s neighbour u = 1") {
-    const P2 D = 2 * v * v - u * u * u;  // v = u^(3/2) / sqrt(2): leaves the square at u = 1, v = 2^(-1/2)
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    REQUIRE(r.topology.components.size() == 1);
-    const auto* p = vertex_at(r.topology, 0, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 1);
-    CHECK(vertex_at(r.topology, 1, std::sqrt(0.5)));
+  SECTION("cusp v^2 = u^3 at (0, 0), tangent to the edge v = 0: one branch, leaving at (1, 2^(-1/2))") {
+    check_corner_arc(2 * v * v - u * u * u, {0, 0}, {1, std::sqrt(0.5)});  // v = u^(3/2) / sqrt(2)
   }
   SECTION("cusp 2 v^2 = (1 - u)^3 at (1, 0), tangent to v = 0 (odd power along the reversed u axis)") {
-    const P2 D = 2 * v * v + (u - 1) * (u - 1) * (u - 1);  // v = (1 - u)^(3/2) / sqrt(2): leaves at (0, 2^(-1/2))
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    REQUIRE(r.topology.components.size() == 1);
-    const auto* p = vertex_at(r.topology, 1, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 1);
-    CHECK(vertex_at(r.topology, 0, std::sqrt(0.5)));
+    check_corner_arc(2 * v * v + (u - 1) * (u - 1) * (u - 1), {1, 0}, {0, std::sqrt(0.5)});  // v = (1 - u)^(3/2) / sqrt(2)
     // reflected: 2 v^2 = (u - 1)^3 opens away from the square
-    auto s = subdivide_curve_in_box(2 * v * v - (u - 1) * (u - 1) * (u - 1), Parameter_box{});
-    REQUIRE(s.certified);
-    REQUIRE(s.topology.vertices.size() == 1);
-    CHECK(s.topology.vertices[0].kind == Curve_topology_vertex::isolated);
+    check_corner_alone(2 * v * v - (u - 1) * (u - 1) * (u - 1), {1, 0});
   }
   SECTION("node at (0, 0) and a line near it: the corner's box is resolved only once the line has left it") {
     const P2 D = (u - 2 * v) * (2 * u - v) * (3 * u + 3 * v - 1);
