@@ -1112,3 +1112,37 @@ TEST_CASE("self-intersection: the seam of a closed patch is a pair of edge lines
     }
   }
 }
+
+// Diagonal neighbours of the teapot's quad mesh (rim 0 and body 5, rim 1 and body 4) touch at one vertex, where the
+// two sheets of the smooth surface are tangent: D = 0 has a cusp at that corner of the (u, t) box, tangent to a side
+// (resolved by the weighted blow-up, internal/corner_blowup.h). Independent facts: the contact is one exact common
+// corner point (boundary_contacts), and two sectors of different rings meet nowhere else, so no other traced point
+// may be genuine.
+TEST_CASE("teapot: diagonal neighbours touching at a corner are certified, the corner a singular boundary point",
+          "[surface][teapot][corner]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  for (const auto& pr : {std::make_pair(0, 5), std::make_pair(1, 4)}) {
+    INFO("patches " << pr.first << ", " << pr.second);
+    const Surface_locus L = intersection_locus(doc.patches[std::size_t(pr.first)], doc.patches[std::size_t(pr.second)]);
+    CHECK(L.topology_method == "subdivision");
+    CHECK(L.edge_lines.empty());
+    REQUIRE(L.contacts.size() == 1);
+    CHECK_FALSE(L.contacts[0].shared_curve);
+    std::size_t corners = 0;
+    double cu = -1, cv = -1;
+    for (const auto& v : L.topology.vertices)
+      if (v.on_boundary && (v.kind == Curve_topology_vertex::singular || v.kind == Curve_topology_vertex::isolated)) {
+        ++corners;
+        cu = v.u, cv = v.v;
+        CHECK(v.u_lo == v.u_hi);  // exact: a corner of the box
+        CHECK(v.v_lo == v.v_hi);
+        CHECK(v.branches <= 2);
+      }
+    REQUIRE(corners == 1);
+    CHECK(((cu == 0 || cu == 1) && (cv == 0 || cv == 1)));
+    for (const auto& arc : L.arcs)
+      for (const auto& q : arc.points)
+        if (q.genuine) CHECK(std::fabs(q.projection[0] - cu) + std::fabs(q.projection[1] - cv) < 1e-9);
+  }
+}
