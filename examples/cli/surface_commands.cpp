@@ -139,6 +139,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
     }
     if (v.on_boundary) {
       jv["tangent_to_boundary"] = v.tangent_to_boundary;  // the curve touches the edge here (from inside: 2 arcs)
+      jv["singular"] = v.singular_on_boundary;  // D = 0 is singular here (a corner: cusp or node; branches into the box)
       bnd.push_back(jv);
     }
   }

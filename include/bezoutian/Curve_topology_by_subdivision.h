@@ -1950,7 +1950,7 @@ class Subdivision_topology {
       v.v = 0.5 * (v.v_lo + v.v_hi);
       v.kind = p.fold ? Curve_topology_vertex::regular
                       : (p.isolated ? Curve_topology_vertex::isolated : Curve_topology_vertex::singular);
-      v.on_boundary = p.on_boundary;
+      v.on_boundary = v.singular_on_boundary = p.on_boundary;
       return v;
     }
     const Line& L = lines_.at(std::make_pair(k.vertical, k.c));

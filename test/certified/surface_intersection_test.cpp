@@ -1135,6 +1135,7 @@ TEST_CASE("teapot: diagonal neighbours touching at a corner are certified, the c
       if (v.on_boundary && (v.kind == Curve_topology_vertex::singular || v.kind == Curve_topology_vertex::isolated)) {
         ++corners;
         cu = v.u, cv = v.v;
+        CHECK(v.singular_on_boundary);
         CHECK(v.u_lo == v.u_hi);  // exact: a corner of the box
         CHECK(v.v_lo == v.v_hi);
         CHECK(v.branches <= 2);

@@ -697,9 +697,11 @@ void check_corner_arc(const P2& D, std::array<double, 2> c, std::array<double, 2
   REQUIRE(p);
   CHECK(p->kind == Curve_topology_vertex::singular);
   CHECK(p->on_boundary);
+  CHECK(p->singular_on_boundary);
   CHECK(p->branches == 1);
   const auto* q = vertex_at(r.topology, x[0], x[1]);
   REQUIRE(q);
+  CHECK_FALSE(q->singular_on_boundary);
   CHECK(q->kind == Curve_topology_vertex::boundary);
   check_samples(D, r.topology, 1e-9);
 }
@@ -710,6 +712,7 @@ void check_corner_alone(const P2& D, std::array<double, 2> c) {
   REQUIRE(r.topology.vertices.size() == 1);
   CHECK(r.topology.vertices[0].kind == Curve_topology_vertex::isolated);
   CHECK(r.topology.vertices[0].on_boundary);
+  CHECK(r.topology.vertices[0].singular_on_boundary);
   CHECK(r.topology.vertices[0].u == c[0]);
   CHECK(r.topology.vertices[0].v == c[1]);
 }
