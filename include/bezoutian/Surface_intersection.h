@@ -472,8 +472,11 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
         e.description = "the side " + line + " lies on D = 0: a collapsed edge (one 3D point), genuine";
         break;
       case Edge_line_explanation::shared_curve:
-        e.description = "the side " + line + " lies on D = 0: a boundary curve shared with side " +
-                        std::to_string(x.partner_side) + " of the partner domain, genuine";
+        // the partner's side: of the second patch (s = c') for a side u = c, of the first (v = c') for t = c
+        e.description = "the side " + line + " lies on D = 0: a boundary curve shared with the side " +
+                        (psi ? (vertical ? "s" : "v") : (vertical ? "u" : "v")) + " = " +
+                        std::to_string(CGAL::to_double(side_value(d, x.partner_side))) +
+                        (psi ? (vertical ? " of the second patch" : " of the first patch") : "") + ", genuine";
         break;
       case Edge_line_explanation::outside_domain:
         e.description = "the side " + line + " lies on D = 0, outside the partner domain: phantom";
