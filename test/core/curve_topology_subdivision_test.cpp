@@ -763,6 +763,20 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
     CHECK(vertex_at(r.topology, 1, 9.0 / 40));
     CHECK(r.topology.number_of_boundary_points() == 5);
   }
+  SECTION("cusp at (1, 0) times a positive quadric vanishing at (9/10, 1/20): an isolated point in the corner's box") {
+    // the crossings of the corner's box are those of the cusp alone: only grad D != 0 there tells the point apart
+    const P2 D = ((u - 1) * (u - 1) - 2 * v * v * v) * ((10 * u - 9) * (10 * u - 9) + (20 * v - 1) * (20 * v - 1));
+    auto r = subdivide_curve_in_box(D, Parameter_box{});
+    REQUIRE(r.certified);
+    CHECK(r.topology.components.size() == 2);
+    const auto* p = vertex_at(r.topology, 1, 0);
+    REQUIRE(p);
+    CHECK(p->branches == 1);
+    const auto* q = vertex_at(r.topology, 0.9, 0.05);
+    REQUIRE(q);
+    CHECK(q->kind == Curve_topology_vertex::isolated);
+    CHECK_FALSE(q->on_boundary);
+  }
   SECTION("node (u - 2v)(2u - v) at (0, 0): two branches into the square; (u + v)(u - 2v): one") {
     const P2 D = (u - 2 * v) * (2 * u - v);
     auto r = subdivide_curve_in_box(D, Parameter_box{});
