@@ -705,6 +705,16 @@ void check_corner_arc(const P2& D, std::array<double, 2> c, std::array<double, 2
   CHECK(q->kind == Curve_topology_vertex::boundary);
   check_samples(D, r.topology, 1e-9);
 }
+// D = 0 in the unit square, certified, with `branches` half-branches from its singular corner c
+Subdivision_topology_result certified_with_corner(const P2& D, std::array<double, 2> c, int branches) {
+  auto r = subdivide_curve_in_box(D, Parameter_box{});
+  REQUIRE(r.certified);
+  const auto* p = vertex_at(r.topology, c[0], c[1]);
+  REQUIRE(p);
+  CHECK(p->singular_on_boundary);
+  CHECK(p->branches == branches);
+  return r;
+}
 // D = 0 meets the unit square only at its corner c (the curve passes it from outside)
 void check_corner_alone(const P2& D, std::array<double, 2> c) {
   auto r = subdivide_curve_in_box(D, Parameter_box{});
@@ -735,11 +745,7 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
   }
   SECTION("node at (0, 0) and a line near it: the corner's box is resolved only once the line has left it") {
     const P2 D = (u - 2 * v) * (2 * u - v) * (3 * u + 3 * v - 1);
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    const auto* p = vertex_at(r.topology, 0, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 2);
+    auto r = certified_with_corner(D, {0, 0}, 2);
     CHECK(r.topology.components.size() == 1);
     std::size_t nodes = 0, boundary = 0;
     for (const auto& x : r.topology.vertices) {
@@ -753,12 +759,8 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
   }
   SECTION("node at (0, 0) and a line through its box that meets neither branch: counted as extra crossings") {
     const P2 D = (u - 2 * v) * (2 * u - v) * (10 * u - 40 * v - 1);  // the line runs from (1/10, 0) to (1, 9/40)
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
+    auto r = certified_with_corner(D, {0, 0}, 2);
     CHECK(r.topology.components.size() == 2);
-    const auto* p = vertex_at(r.topology, 0, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 2);
     CHECK(vertex_at(r.topology, 0.1, 0));
     CHECK(vertex_at(r.topology, 1, 9.0 / 40));
     CHECK(r.topology.number_of_boundary_points() == 5);
@@ -766,12 +768,8 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
   SECTION("cusp at (1, 0) times a positive quadric vanishing at (9/10, 1/20): an isolated point in the corner's box") {
     // the crossings of the corner's box are those of the cusp alone: only grad D != 0 there tells the point apart
     const P2 D = ((u - 1) * (u - 1) - 2 * v * v * v) * ((10 * u - 9) * (10 * u - 9) + (20 * v - 1) * (20 * v - 1));
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
+    auto r = certified_with_corner(D, {1, 0}, 1);
     CHECK(r.topology.components.size() == 2);
-    const auto* p = vertex_at(r.topology, 1, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 1);
     const auto* q = vertex_at(r.topology, 0.9, 0.05);
     REQUIRE(q);
     CHECK(q->kind == Curve_topology_vertex::isolated);
@@ -779,20 +777,12 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
   }
   SECTION("node (u - 2v)(2u - v) at (0, 0): two branches into the square; (u + v)(u - 2v): one") {
     const P2 D = (u - 2 * v) * (2 * u - v);
-    auto r = subdivide_curve_in_box(D, Parameter_box{});
-    REQUIRE(r.certified);
-    const auto* p = vertex_at(r.topology, 0, 0);
-    REQUIRE(p);
-    CHECK(p->branches == 2);
+    auto r = certified_with_corner(D, {0, 0}, 2);
     CHECK(r.topology.components.size() == 1);
     CHECK(vertex_at(r.topology, 1, 0.5));
     CHECK(vertex_at(r.topology, 0.5, 1));
     const P2 E = (u + v) * (u - 2 * v);
-    auto s = subdivide_curve_in_box(E, Parameter_box{});
-    REQUIRE(s.certified);
-    const auto* e = vertex_at(s.topology, 0, 0);
-    REQUIRE(e);
-    CHECK(e->branches == 1);
+    auto s = certified_with_corner(E, {0, 0}, 1);
     CHECK(vertex_at(s.topology, 1, 0.5));
     CHECK(s.topology.vertices.size() == 2);
   }
