@@ -1580,18 +1580,18 @@ class Subdivision_topology {
       for (const Rational* cv : {&box_.v0, &box_.v1}) {
         const auto e = exact_jet(*cu, *cv);
         if (e[0] != 0 || e[1] != 0 || e[2] != 0) continue;
-        const int max_order = std::min(12, a_ + b_);
-        for (int order = 2; order <= max_order; ++order) {
-          bool zero = true;
-          for (int i = 0; i <= order && zero; ++i) zero = CGAL::is_zero(taylor_coefficient(*cu, *cv, i, order - i));
-          if (zero) continue;
-          Multiple_point m{Known_multiple_point{Parameter_box{*cu, *cu, *cv, *cv}, order}, nullptr, false};
-          m.corner = true;
-          m.corner_blowup = std::make_shared<const Corner_blowup>(taylor_coefficients(*cu, *cv), *cu == box_.u0 ? 1 : -1,
-                                                                  *cv == box_.v0 ? 1 : -1);
-          multiple_.push_back(m);
-          break;
-        }
+        // the exact Taylor coefficients once: the order of D at the corner and the blow-up both come from them
+        std::vector<std::vector<Rational>> c = taylor_coefficients(*cu, *cv);
+        int order = INT_MAX;
+        for (std::size_t i = 0; i < c.size(); ++i)
+          for (std::size_t j = 0; j < c[i].size(); ++j)
+            if (!CGAL::is_zero(c[i][j])) order = std::min(order, int(i + j));
+        if (order == INT_MAX) continue;  // D == 0: not a curve
+        Multiple_point m{Known_multiple_point{Parameter_box{*cu, *cu, *cv, *cv}, order}, nullptr, false};
+        m.corner = true;
+        m.corner_blowup =
+            std::make_shared<const Corner_blowup>(std::move(c), *cu == box_.u0 ? 1 : -1, *cv == box_.v0 ? 1 : -1);
+        multiple_.push_back(m);
       }
   }
 

@@ -1053,6 +1053,33 @@ TEST_CASE("teapot: sectors meeting at the pole: the collapsed and the shared sid
   }
 }
 
+// The same sectors with the partner domain [1/2, 1] x [0, 1]: a pair on the side u = 0 has its first point at u = 0,
+// outside that domain, so the side is phantom at every point (proved by the definition); the side t = 0 runs over
+// u in [0, 1], beyond the domain's u range, so no cause is proved for it (unexplained, status not proved).
+TEST_CASE("teapot: edge lines outside the partner domain are phantom, those beyond it unexplained", "[surface][teapot][edge]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  Surface_intersection_options o;
+  o.partner_domain = Parameter_box{Q(1, 2), Q(1), Q(0), Q(1)};
+  o.certify_lifting = false;
+  const Surface_locus L = intersection_locus(doc.patches[28], doc.patches[29], o);
+  REQUIRE(L.edge_lines.size() == 2);
+  const Locus_edge_line* pole = edge_line(L, 3);
+  REQUIRE(pole);
+  CHECK(pole->cause == Locus_edge_line::outside_domain);
+  CHECK_FALSE(pole->genuine);
+  CHECK(pole->status_proved);
+  for (const auto& q : pole->points) {
+    CHECK_FALSE(q.genuine);
+    CHECK(q.status_proved);
+  }
+  const Locus_edge_line* seam = edge_line(L, 0);
+  REQUIRE(seam);
+  CHECK(seam->cause == Locus_edge_line::unexplained);
+  CHECK_FALSE(seam->status_proved);
+  for (const auto& q : seam->points) CHECK_FALSE(q.status_proved);
+}
+
 // A (2,2) polynomial patch whose column 2 (the side v = 1) is collapsed to (1, 2, 3): every pair of points of that
 // side is a double point, so D vanishes on the whole side. Before the side was taken out of D, CGAL's curve analysis
 // of D and the box line threw (the two share a component) and ended the program.
