@@ -229,6 +229,7 @@ class Subdivision_topology {
     prec_ = std::min<mpfr_prec_t>(root_prec_, 144);
     for (const Known_multiple_point& k : o_.multiple_points) multiple_.push_back(Multiple_point{k, nullptr, false});
     add_singular_corners();
+    add_singular_edge_points();
   }
 
   Subdivision_topology_result run() {
@@ -770,6 +771,9 @@ class Subdivision_topology {
       if (singular_corner_ && (cl == 0 || ch == 0) && (vertical ? c == singular_corner_->u0 : c == singular_corner_->v0) &&
           x.compare(vertical ? singular_corner_->v0 : singular_corner_->u0) == 0)
         continue;  // the singular corner being resolved (resolve_corner) is not a crossing
+      if (singular_edge_point_ && vertical == singular_edge_point_->edge_vertical && c == singular_edge_point_->edge_c &&
+          x.compare(singular_edge_point_->edge_position) == 0)
+        continue;  // nor is the singular edge point being resolved (resolve_edge_point)
       if (L.roots[k].multiplicity > 1) {
         // at a domain corner, on an edge across which the box is simple: the curve is tangent to that edge at the
         // corner, decided by corner_crossing
@@ -1571,6 +1575,13 @@ class Subdivision_topology {
     bool refuted;  // a coefficient of order < multiplicity is proved nonzero: the point is ignored
     bool corner = false;  // a singular point of D = 0 at a corner of the domain (the enclosure is that corner)
     std::shared_ptr<const Corner_blowup> corner_blowup;  // its weighted blow-up into the domain (corner_blowup.h)
+    // a singular point of D = 0 inside a side of the domain: the side (u = c if vertical, else v = c), the exact
+    // other coordinate, and the blow-ups of its two quadrants in the domain (below and above it along the side), on
+    // first use; the enclosure is its isolating interval on the side
+    bool edge = false, edge_vertical = false;
+    Rational edge_c;
+    Algebraic_real edge_position;
+    std::shared_ptr<const Corner_blowup> halves[2];
   };
 
   // The domain's corners where D = 0 is singular (D, D_u, D_v vanish exactly), with the order of D there: where
@@ -1593,6 +1604,96 @@ class Subdivision_topology {
             std::make_shared<const Corner_blowup>(std::move(c), *cu == box_.u0 ? 1 : -1, *cv == box_.v0 ? 1 : -1);
         multiple_.push_back(m);
       }
+  }
+
+  // The singular points of D = 0 strictly inside the sides of the domain: the roots of gcd(P, P', Q), P = D on the
+  // side and Q = D across it (exact). Two patches of one surface glued along an edge give them on the side where
+  // the rest of D meets the shared curve (teapot spout 16 x 17: a triple point with one real tangent).
+  void add_singular_edge_points() {
+    for (int side = 0; side < 4; ++side) {
+      const bool vertical = side == 1 || side == 3;
+      const Rational& c = side == 0 ? box_.v0 : (side == 1 ? box_.u1 : (side == 2 ? box_.v1 : box_.u0));
+      const Rational& lo = vertical ? box_.v0 : box_.u0;
+      const Rational& hi = vertical ? box_.v1 : box_.u1;
+      if ((side == 2 && box_.v1 == box_.v0) || (side == 1 && box_.u1 == box_.u0) || !(lo < hi)) continue;
+      Polynomial_1<Rational> P, Q;
+      restriction(vertical, c, P, &Q);
+      if (CGAL::is_zero(P)) continue;  // the side lies on D = 0: not a curve there (box_edge_lines removes it)
+      const Polynomial_1<Integer> p = internal::integer_multiple(P), q = internal::integer_multiple(Q);
+      Polynomial_1<Integer> g = CGAL::gcd(p, CGAL::differentiate(p));
+      if (!CGAL::is_zero(q)) g = CGAL::gcd(g, q);
+      if (g.degree() < 1) continue;
+      for (const Isolated_root& r : isolate_real_roots(g, lo, hi)) {
+        if (r.root.compare(lo) == 0 || r.root.compare(hi) == 0) continue;  // a corner: add_singular_corners
+        r.root.refine_to_width((hi - lo) / Rational(Integer(1) << 40));
+        const Parameter_box K = vertical ? Parameter_box{c, c, r.root.lower(), r.root.upper()}
+                                         : Parameter_box{r.root.lower(), r.root.upper(), c, c};
+        Multiple_point m{Known_multiple_point{K, 2}, nullptr, false};
+        m.edge = true;
+        m.edge_vertical = vertical;
+        m.edge_c = c;
+        m.edge_position = r.root;
+        multiple_.push_back(m);
+      }
+    }
+  }
+
+  // The Taylor coefficients of D at an edge point: exact at a rational point; otherwise enclosures at every point
+  // of its isolating interval (refined to 2^-prec), a coefficient whose enclosure holds 0 decided exactly (the sign
+  // of the exact derivative polynomial along the side at the algebraic point).
+  std::vector<std::vector<Corner_blowup::Enclosed_coefficient>> edge_taylor_coefficients(Multiple_point& mp) const {
+    using Coefficient = Corner_blowup::Enclosed_coefficient;
+    std::vector<std::vector<Coefficient>> out(std::size_t(a_ + 1), std::vector<Coefficient>(std::size_t(b_ + 1)));
+    const Algebraic_real& x0 = mp.edge_position;
+    if (x0.is_rational()) {
+      const Rational q = x0.rational_value();
+      const auto c = mp.edge_vertical ? taylor_coefficients(mp.edge_c, q) : taylor_coefficients(q, mp.edge_c);
+      for (int i = 0; i <= a_; ++i)
+        for (int j = 0; j <= b_; ++j) out[i][j] = Coefficient{c[i][j], c[i][j], CGAL::is_zero(c[i][j])};
+      return out;
+    }
+    const mpfr_prec_t prec = root_prec_ + mpfr_prec_t(bits_) + 128;
+    Rational width(1);
+    for (mpfr_prec_t k = 0; k < prec; ++k) width /= 2;
+    x0.refine_to_width(width);
+    mp.known.enclosure = mp.edge_vertical ? Parameter_box{mp.edge_c, mp.edge_c, x0.lower(), x0.upper()}
+                                          : Parameter_box{x0.lower(), x0.upper(), mp.edge_c, mp.edge_c};
+    const std::vector<Mpfi_interval> c = internal::taylor_enclosures(D_, mp.known.enclosure, prec);
+    // exact: D(u, v) = sum_ij t_ij (u - cu)^i (v - cv)^j with the side's own coordinate shifted (cu or cv = c)
+    // and the other not (0); c_ij is then the i-th (j-th) derivative along the side of one row, over i! (j!)
+    const auto t = mp.edge_vertical ? taylor_coefficients(mp.edge_c, Rational(0)) : taylor_coefficients(Rational(0), mp.edge_c);
+    mpfr_t l, h;
+    mpfr_init2(l, prec);
+    mpfr_init2(h, prec);
+    for (int i = 0; i <= a_; ++i)
+      for (int j = 0; j <= b_; ++j) {
+        const Mpfi_interval& e = c[std::size_t(i) * (b_ + 1) + j];
+        Coefficient& o = out[i][j];
+        o.zero = false;
+        mpfi_get_left(l, e.get());
+        mpfi_get_right(h, e.get());
+        mpq_t ql, qh;
+        mpq_init(ql);
+        mpq_init(qh);
+        mpfr_get_q(ql, l);
+        mpfr_get_q(qh, h);
+        o.lo = Rational(ql);
+        o.hi = Rational(qh);
+        mpq_clear(ql);
+        mpq_clear(qh);
+        if (!e.contains_zero()) continue;
+        std::vector<Rational> row;  // along the side: u for v = c (column j of t), v for u = c (row i)
+        if (mp.edge_vertical)
+          for (int k = 0; k <= b_; ++k) row.push_back(t[i][k]);
+        else
+          for (int k = 0; k <= a_; ++k) row.push_back(t[k][j]);
+        Polynomial_1<Rational> f(row.begin(), row.end());
+        for (int k = 0; k < (mp.edge_vertical ? j : i) && !CGAL::is_zero(f); ++k) f = CGAL::differentiate(f);
+        if (CGAL::is_zero(f) || x0.sign_of(f) == 0) o = Coefficient{Rational(0), Rational(0), true};
+      }
+    mpfr_clear(l);
+    mpfr_clear(h);
+    return out;
   }
 
   // A multiple point of D (order >= 3) at the simplest rational point of B (denominators below 2^20), proved by
@@ -1654,6 +1755,10 @@ class Subdivision_topology {
         if ((K.u0 == B.u0 || K.u0 == B.u1) && (K.v0 == B.v0 || K.v0 == B.v1)) return int(m);
         continue;
       }
+      if (multiple_[m].edge) {  // on a side of the domain: in B iff on B's edge along that side, ends included
+        if (edge_point_side_of(multiple_[m], B) >= 0) return int(m);
+        continue;
+      }
       if (B.u0 < K.u0 && K.u1 < B.u1 && B.v0 < K.v0 && K.v1 < B.v1) return int(m);
     }
     return -1;
@@ -1669,6 +1774,7 @@ class Subdivision_topology {
     if (mp.refuted) return false;
     const Parameter_box& K = mp.known.enclosure;
     if (mp.corner) return resolve_corner(B, mp);
+    if (mp.edge) return resolve_edge_point(B, mp);
     if (!mp.blowup) {
       mp.blowup = std::make_shared<const Multiple_point_blowup>(D_, K, mp.known.multiplicity,
                                                                 root_prec_ + mpfr_prec_t(bits_) + 128);
@@ -1750,6 +1856,85 @@ class Subdivision_topology {
     return true;
   }
 
+  // Where the edge point mp lies on B: -1 not on B; 0 strictly inside B's edge along the side; 1 at that edge's
+  // lower end (B's corner), 2 at its upper end (a rational point on a grid line). A box with the point inside that
+  // edge is cut around it (cut_around_edge_point), so that grid lines do not pass through it.
+  int edge_point_side_of(const Multiple_point& mp, const Box& B) const {
+    const bool on_line = mp.edge_vertical ? (B.u0 == mp.edge_c || B.u1 == mp.edge_c) : (B.v0 == mp.edge_c || B.v1 == mp.edge_c);
+    if (!on_line) return -1;
+    const int l = mp.edge_position.compare(mp.edge_vertical ? B.v0 : B.u0);
+    const int h = mp.edge_position.compare(mp.edge_vertical ? B.v1 : B.u1);
+    return l < 0 || h > 0 ? -1 : (l == 0 ? 1 : (h == 0 ? 2 : 0));
+  }
+
+  // Box B at a singular point p inside a side of the domain, on B's edge along that side: the argument of
+  // resolve_corner, with the two quadrants of the domain at p (along the side below and above p) blown up each
+  // (internal/corner_blowup.h; they share the Newton polygon, so the weights). They prove H = H- + H+ half-branches
+  // leaving p into the domain (none along the normal to the side at p: D has order b0 there, the chart B's form is
+  // nonzero at n = 0) and grad D != 0 on [p - L0^w, p + L0^w] x [0, L0^v] minus p (side coordinates); grad D != 0 on
+  // the rest of B; D = 0 crosses the edges of B (p excluded) exactly H times.
+  bool resolve_edge_point(Box& B, Multiple_point& mp) {
+    if (edge_point_side_of(mp, B) != 0) return false;  // at a corner of B: not handled (the boxes are cut around it)
+    const bool vertical = mp.edge_vertical;
+    // inward: +1 if the domain lies on the side of larger coordinate across the side
+    const int inward = mp.edge_c == (vertical ? box_.u0 : box_.v0) ? 1 : -1;
+    if (!mp.halves[0]) {
+      const auto c = edge_taylor_coefficients(mp);
+      for (int h = 0; h < 2; ++h) {
+        const int along = h == 0 ? -1 : 1;
+        mp.halves[h] = std::make_shared<const Corner_blowup>(c, vertical ? inward : along, vertical ? along : inward);
+      }
+    }
+    if (!mp.halves[0]->valid() || !mp.halves[1]->valid()) return false;
+    const Parameter_box& K = mp.known.enclosure;
+    // B's edge along the side runs over [lo, hi]
+    const Rational& lo = vertical ? B.v0 : B.u0;
+    const Rational& hi = vertical ? B.v1 : B.u1;
+    const Rational& klo = vertical ? K.v0 : K.u0;
+    const Rational& khi = vertical ? K.v1 : K.u1;
+    const int wa = vertical ? mp.halves[0]->weight_y() : mp.halves[0]->weight_x();  // weight along the side
+    const int wc = vertical ? mp.halves[0]->weight_x() : mp.halves[0]->weight_y();  // across it
+    const Rational along_reach = std::max(khi - lo, hi - klo);
+    const Rational across_reach = vertical ? B.u1 - B.u0 : B.v1 - B.v0;
+    auto extent = [](int e, int weight) {  // 2^(e weight), exactly
+      Rational r(1);
+      for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
+      return r;
+    };
+    int e = int(std::ceil(std::max(std::log2(CGAL::to_double(along_reach)) / wa, std::log2(CGAL::to_double(across_reach)) / wc)));
+    while (extent(e, wa) < along_reach || extent(e, wc) < across_reach) ++e;
+    int half = -1;
+    for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
+      half = 0;
+      for (int h = 0; h < 2 && half >= 0; ++h) {
+        const int n = mp.halves[h]->half_branches(e);
+        half = n < 0 ? -1 : half + n;
+      }
+      if (half < 0) e -= attempt == 0 ? 1 : 2;
+    }
+    if (half < 0) return false;
+    const Rational ra = extent(e, wa), rc = extent(e, wc);
+    std::vector<Crossing> cr;
+    std::vector<std::size_t> isolated_corners;
+    singular_edge_point_ = &mp;
+    const bool ok = crossings_around(B, cr, isolated_corners);
+    singular_edge_point_ = nullptr;
+    if (!ok || cr.size() != std::size_t(half)) return false;
+    // the proved rectangle, shrunk by the enclosure of p (it holds p's exact rectangle)
+    const Parameter_box S = vertical ? Parameter_box{mp.edge_c - rc, mp.edge_c + rc, khi - ra, klo + ra}
+                                     : Parameter_box{khi - ra, klo + ra, mp.edge_c - rc, mp.edge_c + rc};
+    const bool covers = S.u0 <= B.u0 && B.u1 <= S.u1 && S.v0 <= B.v0 && B.v1 <= S.v1;
+    if (!covers && !no_critical_point_outside(B, S)) return false;
+    Singular_point p{K.u0, K.u1, K.v0, K.v1, half == 0, half};
+    p.on_boundary = true;
+    singular_.push_back(p);
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    const double px = CGAL::to_double(((K.u0 + K.u1) / 2 - B.u0) / wu), py = CGAL::to_double(((K.v0 + K.v1) / 2 - B.v0) / wv);
+    connect_to_point(B, cr, node_singular(singular_.size() - 1), px, py);
+    return true;
+  }
+
   // A box B holding a known multiple point p (enclosure K strictly inside) that resolve_multiple could not
   // resolve is cut into 3 x 3 boxes: a square [c - h, c + h]^2 around p (c a short rational within h/8 of K, h a
   // power of two at most half the distance from K to B's edges) and the eight boxes around it, all at a distance
@@ -1761,7 +1946,39 @@ class Subdivision_topology {
   bool split_around_multiple(Box& B, std::vector<Box>& stack) {
     const int m = multiple_point_in(B);
     if (m < 0 || multiple_[std::size_t(m)].refuted) return false;
+    if (multiple_[std::size_t(m)].edge) return cut_around_edge_point(B, multiple_[std::size_t(m)], stack);
     return cut_around(B, multiple_[std::size_t(m)].known.enclosure, stack, true);
+  }
+  // The same cut for a point p strictly inside B's edge along a side of the domain: 3 x 2 boxes, the middle one
+  // [c - h, c + h] along the side by h across it holding p, the others at a distance >= 7h/8 from p.
+  bool cut_around_edge_point(Box& B, const Multiple_point& mp, std::vector<Box>& stack) {
+    if (edge_point_side_of(mp, B) != 0) return false;
+    const bool vertical = mp.edge_vertical;
+    const Parameter_box& K = mp.known.enclosure;
+    const Rational& lo = vertical ? B.v0 : B.u0;
+    const Rational& hi = vertical ? B.v1 : B.u1;
+    const Rational& klo = vertical ? K.v0 : K.u0;
+    const Rational& khi = vertical ? K.v1 : K.u1;
+    const Rational across = vertical ? B.u1 - B.u0 : B.v1 - B.v0;
+    if (!(lo < klo && khi < hi)) return false;
+    const Rational dist = std::min(std::min(klo - lo, hi - khi), across);
+    Rational h(1);
+    while (h > dist / 2) h /= 2;
+    while (h * 2 <= dist / 2) h *= 2;
+    Rational m;
+    if (!simplest_rational(klo - h / 8, khi + h / 8, m)) return false;
+    const Rational al[4] = {lo, m - h, m + h, hi};
+    const bool low_side = mp.edge_c == (vertical ? B.u0 : B.v0);
+    const Rational ac[3] = {vertical ? B.u0 : B.v0, low_side ? mp.edge_c + h : (vertical ? B.u1 : B.v1) - h,
+                            vertical ? B.u1 : B.v1};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 2; ++j) {
+        Box C = vertical ? Box{ac[j], ac[j + 1], al[i], al[i + 1], B.depth + 1, nullptr, nullptr}
+                         : Box{al[i], al[i + 1], ac[j], ac[j + 1], B.depth + 1, nullptr, nullptr};
+        C.fast = double_grid_of(mpfi_grid(C));
+        stack.push_back(C);
+      }
+    return true;
   }
   // The 3 x 3 cut of B around the box K strictly inside it (above), with MPFI grids (`exact`) or double-double
   // ones when available; false if K is not strictly inside B.
@@ -2139,6 +2356,7 @@ class Subdivision_topology {
   std::vector<Singular_point> singular_;
   std::vector<Multiple_point> multiple_;
   const Parameter_box* singular_corner_ = nullptr;  // set while resolve_corner collects the crossings around it
+  const Multiple_point* singular_edge_point_ = nullptr;  // set while resolve_edge_point collects them
   std::set<std::pair<Rational, Rational>> rational_points_tested_;
   static constexpr int rational_multiple_depth = 8;  // from this depth on, boxes look for rational multiple points
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve

@@ -573,13 +573,7 @@ TEST_CASE("subdivision: known multiple points on a split line, or with two nearl
   }
 }
 
-TEST_CASE("subdivision: singular points on an edge of the box are reported as not certified, naming the box",
-          "[topology][subdivision]") {
-  // A node on the edge v = 0 at u = 1/2 (2u - 1 = +-v): not handled by the subdivision yet (corners are, below): the
-  // documented answer is "not certified", with the box named, never a guess.
-  const auto r = subdivide_curve_in_box((2 * u - 1 - v) * (2 * u - 1 + v), Parameter_box{});
-  CHECK_FALSE(r.certified);
-  CHECK(r.reason.find("(0.500000, 0.000000)") != std::string::npos);
+TEST_CASE("subdivision: a node and an isolated point at a corner of the box", "[topology][subdivision]") {
   // Corners: a node at (0, 0) with one branch entering the box (u = v) and one touching it only there (u + 2v = 0),
   // and an isolated point at the corner (u^2 + v^2)
   const auto a = subdivide_curve_in_box((u - v) * (u + 2 * v), Parameter_box{});
@@ -785,5 +779,62 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
     auto s = certified_with_corner(E, {0, 0}, 1);
     CHECK(vertex_at(s.topology, 1, 0.5));
     CHECK(s.topology.vertices.size() == 2);
+  }
+}
+
+// Singular points inside a side of the domain (the rest of D meeting a shared edge, teapot spout 16 x 17): the two
+// quadrants at the point, each blown up (resolve_edge_point). Expected values from the closed forms.
+namespace {
+// D = 0 in the unit square, certified, with `branches` half-branches from the singular point c on its boundary,
+// and the boundary points `exits` (other than c)
+Subdivision_topology_result certified_with_edge_point(const P2& D, std::array<double, 2> c, int branches,
+                                                      std::vector<std::array<double, 2>> exits) {
+  auto r = subdivide_curve_in_box(D, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  const auto* p = vertex_at(r.topology, c[0], c[1]);
+  REQUIRE(p);
+  CHECK(p->singular_on_boundary);
+  CHECK(p->on_boundary);
+  CHECK(p->branches == branches);
+  CHECK(p->kind == (branches == 0 ? Curve_topology_vertex::isolated : Curve_topology_vertex::singular));
+  CHECK(p->u_hi - p->u_lo < 1e-12);
+  CHECK(p->v_hi - p->v_lo < 1e-12);
+  CHECK(r.topology.number_of_boundary_points() == exits.size() + 1);  // with c
+  for (const auto& x : exits) {
+    const auto* q = vertex_at(r.topology, x[0], x[1]);
+    REQUIRE(q);
+    CHECK(q->kind == Curve_topology_vertex::boundary);
+  }
+  CHECK(r.topology.edges.size() == std::size_t(branches));
+  check_samples(D, r.topology, 1e-9);
+  return r;
+}
+}  // namespace
+
+TEST_CASE("subdivision: singular points inside an edge of the domain, rational and irrational",
+          "[topology][subdivision][edge_point]") {
+  const double r2 = std::sqrt(0.5);
+  SECTION("node (3u - 1)^2 = v^2 at (1/3, 0): two branches, to (2/3, 1) and (0, 1)") {
+    certified_with_edge_point((3 * u - 1 - v) * (3 * u - 1 + v), {1.0 / 3, 0}, 2, {{2.0 / 3, 1}, {0, 1}});
+  }
+  SECTION("node at (15/31, 0), where the first split would put a grid line (the box is cut around the point)") {
+    certified_with_edge_point((31 * u - 15 - 31 * v) * (31 * u - 15 + 31 * v), {15.0 / 31, 0}, 2,
+                              {{1, 16.0 / 31}, {0, 15.0 / 31}});
+  }
+  SECTION("node of the parabolas v = +-(2u^2 - 1) at (1/sqrt 2, 0): two branches, to (1, 1) and (0, 1)") {
+    certified_with_edge_point((2 * u * u - 1 - v) * (2 * u * u - 1 + v), {r2, 0}, 2, {{1, 1}, {0, 1}});
+  }
+  SECTION("cusp 2 v^2 = (2u^2 - 1)^3 tangent to v = 0 at (1/sqrt 2, 0): one branch, to (1, 1/sqrt 2)") {
+    certified_with_edge_point(2 * v * v - (2 * u * u - 1) * (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 1, {{1, r2}});
+    // reflected along the side: the branch runs the other way, to (0, 1/sqrt 2)
+    certified_with_edge_point(2 * v * v + (2 * u * u - 1) * (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 1, {{0, r2}});
+  }
+  SECTION("v^2 + (2u^2 - 1)^2 = 0: the point alone, isolated on the boundary") {
+    certified_with_edge_point(v * v + (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 0, {});
+  }
+  SECTION("on the side u = 1: (2v^2 - 1)^2 = 4 (1 - u)^2 at (1, 1/sqrt 2), branches to (1/2, 1) and (1/2, 0)") {
+    certified_with_edge_point((2 * v * v - 1 - 2 * (1 - u)) * (2 * v * v - 1 + 2 * (1 - u)), {1, r2}, 2,
+                              {{0.5, 1}, {0.5, 0}});
   }
 }

@@ -38,30 +38,22 @@ namespace internal {
 
 class Corner_blowup {
  public:
+  /// A Taylor coefficient of D at p known to lie in [lo, hi], or known to be exactly zero (an irrational p on a side
+  /// of the box: the zero pattern is decided exactly, the other coefficients are enclosed).
+  struct Enclosed_coefficient {
+    Rational lo, hi;
+    bool zero;
+  };
+
   /// c[a][b]: the exact Taylor coefficients of D at p (of x^a y^b, x = u - p_u, y = v - p_v); (sx, sy) the quadrant.
   Corner_blowup(const std::vector<std::vector<Rational>>& c, int sx, int sy) {
-    int a0 = -1, b0 = -1;
-    for (std::size_t a = 0; a < c.size() && a0 < 0; ++a)
-      if (!c[a].empty() && !CGAL::is_zero(c[a][0])) a0 = int(a);
-    for (std::size_t b = 0; !c.empty() && b < c[0].size() && b0 < 0; ++b)
-      if (!CGAL::is_zero(c[0][b])) b0 = int(b);
-    if (a0 < 1 || b0 < 1) return;  // D(p) != 0, or D vanishes on a side through p
-    const int g = std::gcd(a0, b0);
-    w_ = b0 / g;
-    v_ = a0 / g;
-    N_ = w_ * a0;
+    std::vector<std::vector<Enclosed_coefficient>> e(c.size());
     for (std::size_t a = 0; a < c.size(); ++a)
-      for (std::size_t b = 0; b < c[a].size(); ++b) {
-        if (CGAL::is_zero(c[a][b])) continue;
-        const int t = w_ * int(a) + v_ * int(b) - N_;
-        if (t < 0) return;  // a point of the support below the edge: more than one compact edge
-        const bool odd = ((sx < 0) && (a % 2 == 1)) != ((sy < 0) && (b % 2 == 1));
-        terms_.push_back(Term{int(a), int(b), t, odd ? -c[a][b] : c[a][b]});
-        max_slope_ = std::max({max_slope_, int(a), int(b)});
-        max_t_ = std::max(max_t_, t);
-      }
-    valid_ = true;
+      for (const Rational& x : c[a]) e[a].push_back(Enclosed_coefficient{x, x, CGAL::is_zero(x)});
+    init(e, sx, sy);
   }
+  /// The same with enclosures of the coefficients: every test below holds for every set of coefficients in them.
+  Corner_blowup(const std::vector<std::vector<Enclosed_coefficient>>& c, int sx, int sy) { init(c, sx, sy); }
 
   bool valid() const { return valid_; }
   int weight_x() const { return w_; }
@@ -94,27 +86,54 @@ class Corner_blowup {
   using IA = CGAL::Interval_nt<>;
   struct Term {
     int a, b, t;
-    Rational c;
+    Rational lo, hi;  // the coefficient s_ab lies in [lo, hi]
   };
+
+  void init(const std::vector<std::vector<Enclosed_coefficient>>& c, int sx, int sy) {
+    int a0 = -1, b0 = -1;
+    for (std::size_t a = 0; a < c.size() && a0 < 0; ++a)
+      if (!c[a].empty() && !c[a][0].zero) a0 = int(a);
+    for (std::size_t b = 0; !c.empty() && b < c[0].size() && b0 < 0; ++b)
+      if (!c[0][b].zero) b0 = int(b);
+    if (a0 < 1 || b0 < 1) return;  // D(p) != 0, or D vanishes on a side through p
+    const int g = std::gcd(a0, b0);
+    w_ = b0 / g;
+    v_ = a0 / g;
+    N_ = w_ * a0;
+    for (std::size_t a = 0; a < c.size(); ++a)
+      for (std::size_t b = 0; b < c[a].size(); ++b) {
+        const Enclosed_coefficient& x = c[a][b];
+        if (x.zero) continue;
+        const int t = w_ * int(a) + v_ * int(b) - N_;
+        if (t < 0) return;  // a point of the support below the edge: more than one compact edge
+        const bool odd = ((sx < 0) && (a % 2 == 1)) != ((sy < 0) && (b % 2 == 1));
+        terms_.push_back(odd ? Term{int(a), int(b), t, -x.hi, -x.lo} : Term{int(a), int(b), t, x.lo, x.hi});
+        max_slope_ = std::max({max_slope_, int(a), int(b)});
+        max_t_ = std::max(max_t_, t);
+      }
+    valid_ = true;
+  }
   struct Scaled {
     int a, b, t;
     IA s;
   };
 
+  static long exponent(const Rational& q) {  // about log2 |q|
+    return CGAL::is_zero(q) ? LONG_MIN : long(q.numerator().bit_size()) - long(q.denominator().bit_size());
+  }
   // s = c L0^t 2^-E, E the exponent of the largest coefficient on the edge (t = 0)
   bool scale(int e) const {
     long E = LONG_MIN;
     for (const Term& x : terms_)
-      if (x.t == 0) E = std::max(E, long(x.c.numerator().bit_size()) - long(x.c.denominator().bit_size()));
+      if (x.t == 0) E = std::max({E, exponent(x.lo), exponent(x.hi)});
     if (E == LONG_MIN) return false;
     scaled_.clear();
     for (const Term& x : terms_) {
-      Rational q = x.c;
-      const long shift = long(e) * x.t - E;  // q * 2^shift, exactly
-      if (shift >= 0) q *= Rational(two_power(shift)); else q /= Rational(two_power(-shift));
-      const std::pair<double, double> r = CGAL::to_interval(q);
-      if (!std::isfinite(r.first) || !std::isfinite(r.second)) return false;
-      scaled_.push_back(Scaled{x.a, x.b, x.t, IA(r.first, r.second)});
+      const long shift = long(e) * x.t - E;  // times 2^shift, exactly
+      const Rational f = shift >= 0 ? Rational(two_power(shift)) : Rational(1) / Rational(two_power(-shift));
+      const std::pair<double, double> l = CGAL::to_interval(x.lo * f), h = CGAL::to_interval(x.hi * f);
+      if (!std::isfinite(l.first) || !std::isfinite(h.second)) return false;
+      scaled_.push_back(Scaled{x.a, x.b, x.t, IA(l.first, h.second)});
     }
     return true;
   }

@@ -34,24 +34,38 @@
 namespace bezoutian {
 namespace internal {
 
+// Enclosures, valid at every point of K, of the Taylor coefficients c_ij of D (of (u - p_u)^i (v - p_v)^j), stored
+// row by row: c_ij at index i (b + 1) + j, a and b the degrees of D in u and v. A Taylor shift by repeated Horner
+// steps in MPFI (inclusion-monotone: each interval holds the exact coefficient at the exact p).
+inline std::vector<Mpfi_interval> taylor_enclosures(const Polynomial_2<Integer>& D, const Parameter_box& K,
+                                                    mpfr_prec_t prec) {
+  const int b = D.degree();
+  int a = 0;
+  for (int j = 0; j <= b; ++j)
+    if (!CGAL::is_zero(D[j])) a = std::max(a, D[j].degree());
+  std::vector<Mpfi_interval> c(std::size_t(a + 1) * (b + 1), Mpfi_interval::point(0, prec));
+  auto at = [&](int i, int j) -> Mpfi_interval& { return c[std::size_t(i) * (b + 1) + j]; };
+  for (int j = 0; j <= b; ++j)
+    for (int i = 0; !CGAL::is_zero(D[j]) && i <= D[j].degree(); ++i) mpfi_set_z(at(i, j).get(), D[j][i].mpz());
+  const Mpfi_interval pu = Mpfi_interval::hull(K.u0, K.u1, prec), pv = Mpfi_interval::hull(K.v0, K.v1, prec);
+  // first in u (each column j), then in v (each row i)
+  for (int j = 0; j <= b; ++j)
+    for (int s = 0; s < a; ++s)
+      for (int i = a - 1; i >= s; --i) at(i, j) = at(i, j) + pu * at(i + 1, j);
+  for (int i = 0; i <= a; ++i)
+    for (int s = 0; s < b; ++s)
+      for (int j = b - 1; j >= s; --j) at(i, j) = at(i, j) + pv * at(i, j + 1);
+  return c;
+}
+
 class Multiple_point_blowup {
  public:
   /// Taylor coefficients of D at every point of K, at `prec` bits; k is the claimed multiplicity (k >= 2).
-  Multiple_point_blowup(const Polynomial_2<Integer>& D, const Parameter_box& K, int k, mpfr_prec_t prec) : k_(k) {
+  Multiple_point_blowup(const Polynomial_2<Integer>& D, const Parameter_box& K, int k, mpfr_prec_t prec)
+      : k_(k), c_(taylor_enclosures(D, K, prec)) {
     b_ = D.degree();
     for (int j = 0; j <= b_; ++j)
       if (!CGAL::is_zero(D[j])) a_ = std::max(a_, D[j].degree());
-    c_.assign(std::size_t(a_ + 1) * (b_ + 1), Mpfi_interval::point(0, prec));
-    for (int j = 0; j <= b_; ++j)
-      for (int i = 0; !CGAL::is_zero(D[j]) && i <= D[j].degree(); ++i) mpfi_set_z(c(i, j).get(), D[j][i].mpz());
-    const Mpfi_interval pu = Mpfi_interval::hull(K.u0, K.u1, prec), pv = Mpfi_interval::hull(K.v0, K.v1, prec);
-    // Taylor shift by repeated Horner steps, first in u (each column j), then in v (each row i)
-    for (int j = 0; j <= b_; ++j)
-      for (int s = 0; s < a_; ++s)
-        for (int i = a_ - 1; i >= s; --i) c(i, j) = c(i, j) + pu * c(i + 1, j);
-    for (int i = 0; i <= a_; ++i)
-      for (int s = 0; s < b_; ++s)
-        for (int j = b_ - 1; j >= s; --j) c(i, j) = c(i, j) + pv * c(i, j + 1);
   }
 
   /// False if a coefficient of order < k is proved nonzero: then p is not a point of multiplicity >= k.
@@ -189,8 +203,9 @@ class Multiple_point_blowup {
     return true;
   }
 
-  int k_ = 3, a_ = 0, b_ = 0;
+  int k_ = 3;
   std::vector<Mpfi_interval> c_;
+  int a_ = 0, b_ = 0;
   mutable std::vector<IA> s_;
 };
 
