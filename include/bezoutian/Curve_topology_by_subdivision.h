@@ -1550,19 +1550,21 @@ class Subdivision_topology {
       for (int k = 1; k < o_.samples_per_arc; ++k) {  // points of the segment pulled onto D = 0 (drawing only)
         const long double f = (long double)k / o_.samples_per_arc;
         long double px = qx + f * (x - qx), py = qy + f * (y - qy);
-        for (int it = 0; it < 8; ++it) {
+        bool on_curve = false;  // only converged points are kept (near a singular point with several branches the
+                                // pull from the chord may not converge in a few steps)
+        for (int it = 0; it < 12 && !on_curve; ++it) {
           const auto j = local_jet(L, px, py);
           const long double n2 = j[1] * j[1] + j[2] * j[2];
           if (!(n2 > 0)) break;
           const long double nx = px - j[0] * j[1] / n2, ny = py - j[0] * j[2] / n2;
           if (!(nx >= 0 && nx <= 1 && ny >= 0 && ny <= 1)) break;
-          const bool converged = std::fabs(nx - px) + std::fabs(ny - py) < 1e-17L;
+          on_curve = std::fabs(nx - px) + std::fabs(ny - py) < 1e-17L;
           px = nx;
           py = ny;
-          if (converged) break;
         }
-        arc.inner.push_back({CGAL::to_double(B.u0) + double(px) * CGAL::to_double(wu),
-                             CGAL::to_double(B.v0) + double(py) * CGAL::to_double(wv)});
+        if (on_curve)
+          arc.inner.push_back({CGAL::to_double(B.u0) + double(px) * CGAL::to_double(wu),
+                               CGAL::to_double(B.v0) + double(py) * CGAL::to_double(wv)});
       }
       arcs_.push_back(arc);
     }

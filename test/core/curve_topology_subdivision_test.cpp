@@ -769,6 +769,28 @@ TEST_CASE("subdivision: singular points at domain corners (cusps tangent to an e
     CHECK(q->kind == Curve_topology_vertex::isolated);
     CHECK_FALSE(q->on_boundary);
   }
+  SECTION("two parabolas tangent to v = 0 at (0, 0): one Newton edge with two roots, to (1, 1/2) and (1, 1/4)") {
+    auto r = certified_with_corner((2 * v - u * u) * (4 * v - u * u), {0, 0}, 2);
+    CHECK(r.topology.components.size() == 1);
+    CHECK(r.topology.number_of_boundary_points() == 3);
+    CHECK(vertex_at(r.topology, 1, 0.5));
+    CHECK(vertex_at(r.topology, 1, 0.25));
+  }
+  SECTION("(3v - u)(4v^2 - u^3) at (0, 0): two Newton edges, weights (1, 1) and (2, 3), one branch each") {
+    // v = u / 3 leaves at (1, 1/3), v = u^(3/2) / 2 at (1, 1/2); they cross at the node (4/9, 4/27)
+    auto r = certified_with_corner((3 * v - u) * (4 * v * v - u * u * u), {0, 0}, 2);
+    CHECK(r.topology.components.size() == 1);
+    CHECK(r.topology.number_of_boundary_points() == 3);
+    CHECK(vertex_at(r.topology, 1, 1.0 / 3));
+    CHECK(vertex_at(r.topology, 1, 0.5));
+    const auto* n = vertex_at(r.topology, 4.0 / 9, 4.0 / 27);
+    REQUIRE(n);
+    CHECK(n->kind == Curve_topology_vertex::singular);
+    check_samples((3 * v - u) * (4 * v * v - u * u * u), r.topology, 1e-9);
+  }
+  SECTION("u^5 + u^2 v^3 + v^6 at (0, 0): two Newton edges without positive roots, the corner alone") {
+    check_corner_alone(u * u * u * u * u + u * u * v * v * v + v * v * v * v * v * v, {0, 0});
+  }
   SECTION("node (u - 2v)(2u - v) at (0, 0): two branches into the square; (u + v)(u - 2v): one") {
     const P2 D = (u - 2 * v) * (2 * u - v);
     auto r = certified_with_corner(D, {0, 0}, 2);
@@ -788,7 +810,7 @@ namespace {
 // D = 0 in the unit square, certified, with `branches` half-branches from the singular point c on its boundary,
 // and the boundary points `exits` (other than c)
 Subdivision_topology_result certified_with_edge_point(const P2& D, std::array<double, 2> c, int branches,
-                                                      std::vector<std::array<double, 2>> exits) {
+                                                      std::vector<std::array<double, 2>> exits, std::size_t edges = 0) {
   auto r = subdivide_curve_in_box(D, Parameter_box{});
   INFO(r.reason);
   REQUIRE(r.certified);
@@ -806,7 +828,7 @@ Subdivision_topology_result certified_with_edge_point(const P2& D, std::array<do
     REQUIRE(q);
     CHECK(q->kind == Curve_topology_vertex::boundary);
   }
-  CHECK(r.topology.edges.size() == std::size_t(branches));
+  CHECK(r.topology.edges.size() == (edges ? edges : std::size_t(branches)));
   check_samples(D, r.topology, 1e-9);
   return r;
 }
@@ -829,6 +851,14 @@ TEST_CASE("subdivision: singular points inside an edge of the domain, rational a
     certified_with_edge_point(2 * v * v - (2 * u * u - 1) * (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 1, {{1, r2}});
     // reflected along the side: the branch runs the other way, to (0, 1/sqrt 2)
     certified_with_edge_point(2 * v * v + (2 * u * u - 1) * (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 1, {{0, r2}});
+  }
+  SECTION("(6v - 2u + 1)(32 v^2 - (2u - 1)^3) at (1/2, 0): two Newton edges, both branches to the right") {
+    // v = (u - 1/2) / 3 leaves at (1, 1/6), v = (u - 1/2)^(3/2) / 2 at (1, 2^(-5/2)); they cross at (17/18, 4/27)
+    const P2 D = (6 * v - 2 * u + 1) * (32 * v * v - (2 * u - 1) * (2 * u - 1) * (2 * u - 1));
+    auto r = certified_with_edge_point(D, {0.5, 0}, 2, {{1, 1.0 / 6}, {1, std::pow(2.0, -2.5)}}, 4);
+    const auto* n = vertex_at(r.topology, 17.0 / 18, 4.0 / 27);
+    REQUIRE(n);
+    CHECK(n->kind == Curve_topology_vertex::singular);
   }
   SECTION("v^2 + (2u^2 - 1)^2 = 0: the point alone, isolated on the boundary") {
     certified_with_edge_point(v * v + (2 * u * u - 1) * (2 * u * u - 1), {r2, 0}, 0, {});

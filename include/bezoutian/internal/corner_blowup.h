@@ -1,23 +1,38 @@
-// The half-branches of D = 0 that leave a singular corner p of the box into the box, proved by a weighted blow-up.
+// The half-branches of D = 0 that leave a singular point p on the boundary of the box into one quadrant at p, proved
+// by a toric (Newton polygon) blow-up.
 //
-// Write D(p + (sx x, sy y)) = sum c_ab sx^a sy^b x^a y^b with x, y >= 0 in the quadrant of the box at p (sx, sy =
-// +-1). Where two patches of one smooth surface touch at a corner, D = 0 has a cusp there, tangent to a side of the
-// box (c y^2 + d x^3 + ...): the tangent cone is a double line and the plain blow-up of multiple_point_blowup.h does
-// not decide. If the Newton polygon of D at p has a single compact edge, from (a0, 0) to (0, b0), with weights
-// (w, v) = (b0, a0) / gcd and weighted order N = w a0 (every c_ab with w a + v b < N is zero), the charts
-//     A: x = L^w,  y = m L^v,   m in [0, sigma],    B: y = L^v,  x = n L^w,   n in [0, sigma^(-w/v)],
-// (sigma = 1, 2^v or 2^-v: both ends dyadic) cover the rectangle [0, L0^w] x [0, L0^v] for L in [0, L0], and in A
-//     D = L^N E_A(L, m),  E_A(L, m) = sum_ab s_ab m^b L^(w a + v b - N),   s_ab = c_ab sx^a sy^b,
-//     (dD/dx, dD/dy) = (sx L^(N-w) GX_A, sy L^(N-v) GY_A),  GX_A = sum a s_ab m^b L^(..),  GY_A = sum b s_ab m^(b-1) L^(..)
-// (B alike with n and the roles of a, b swapped). E_A(0, m) is the weighted initial form W(m); it is nonzero at
-// m = 0 (c_a0,0 != 0). If every root of W and of the chart B form in the open slope ranges is simple and none is at
-// the common end, E_A = 0 near L = 0 is one smooth graph through each (0, m0) and nothing else (implicit function
-// theorem), so the germ of D = 0 at p in the quadrant is exactly H half-branches, H the number of those roots. If
-// (GX, GY) has no common zero on [0, L0] x (slope range) in both charts, grad D != 0 on the rectangle minus p. (Weights
-// (1, 1) are the ordinary multiple points whose tangents are not along the box's sides.)
+// Write D(p + (sx x, sy y)) = sum s_ab x^a y^b, s_ab = c_ab sx^a sy^b, x, y >= 0, for the quadrant (sx, sy = +-1)
+// of the box at p (a corner of the box, or one side of a point inside an edge). Where two patches of one smooth
+// surface touch at a corner, D = 0 has a cusp there, tangent to a side of the box (c y^2 + d x^3 + ...): the tangent
+// cone is a double line and the plain blow-up of multiple_point_blowup.h does not decide.
 //
-// Coefficients are exact rationals (p is a rational corner), scaled by L0^(w a + v b - N) and a power of two and
-// converted outward to double intervals (CGAL::Interval_nt); the tests split the chart's pieces until they decide.
+// Newton polygon. Let a0, b0 be the orders of D(x, 0) and D(0, y) (both finite: no side through p lies on D = 0).
+// The lower convex hull of the support from (a0, 0) to (0, b0) has edges e_1, ..., e_k (from the x axis), e_i with
+// primitive inner normal R_i = (w_i, v_i) > 0 and N_i = min over the support of w_i a + v_i b. On e_i the lattice
+// points are (alpha - j v_i, beta + j w_i), j = 0..g_i, and the edge polynomial is P_i(z) = sum_j s_(those) z^j
+// (P_i(0) and its leading coefficient are vertex coefficients, nonzero). With R_0 = (0, 1), R_(k+1) = (1, 0) (the
+// axes, N = 0), the charts C_i (i = 0..k)
+//     x = s^(w_i) t^(w_(i+1)),  y = s^(v_i) t^(v_(i+1)),   D = s^(N_i) t^(N_(i+1)) E_i(s, t)
+// are diffeomorphisms of the open quadrant (log-linear maps with nonsingular matrices), E_i a polynomial. On the
+// exceptional curve t = 0 of C_(i-1) and s = 0 of C_i (ray R_i) the strict transform E vanishes exactly at the
+// positive roots of P_i (in the coordinate z = y^(w_i) / x^(v_i) up to a power), and at no point where two rays meet
+// (E there is a vertex coefficient). Toric resolution: if every positive root of every P_i is simple, the germ of
+// D = 0 at p in the open quadrant is exactly H smooth half-branches, H the number of those roots (one through each
+// root, transversal to its exceptional curve), and D has no zero on the axes near p (the vertex terms s_(a0,0),
+// s_(0,b0)). One edge from (a0, 0) to (0, b0) is the common case (a cusp tangent to a side); weights (1, 1) are the
+// ordinary multiple points whose tangents are not along the sides.
+//
+// Gradient. In C_i, x D_x = s^(N_i) t^(N_(i+1)) F_i and y D_y = s^(N_i) t^(N_(i+1)) G_i with F_i, G_i the polynomials
+// of coefficients a s_ab, b s_ab; G_0 has the factor s (y = 0 is s = 0 there) and F_k the factor t (x = 0), divided
+// out, so that (F, G) != 0 on a chart region, axes included, gives grad D != 0 on its image minus p. The rectangle
+// [0, 2^ex] x [0, 2^ey] lies in the union of the images of [0, 2^sigma_i] x [0, 2^tau_i] when sigma_i R_i +
+// tau_i R_(i+1) >= (ex, ey) in the basis (R_i, R_(i+1)) (log coordinates: each chart is a translated cone and the
+// cones cover the quadrant).
+//
+// Coefficients are exact rationals (p rational) or enclosures with an exact zero pattern (p algebraic, on a side);
+// scaled by exact powers of two and converted outward to double intervals (CGAL::Interval_nt). The root counts
+// split (0, oo) at z = 1, 2 or 1/2 (a root at the split moves it) and do not depend on the rectangle; the gradient
+// tests split their chart's region until every piece decides.
 #ifndef BEZOUTIAN_INTERNAL_CORNER_BLOWUP_H
 #define BEZOUTIAN_INTERNAL_CORNER_BLOWUP_H
 
@@ -56,37 +71,34 @@ class Corner_blowup {
   Corner_blowup(const std::vector<std::vector<Enclosed_coefficient>>& c, int sx, int sy) { init(c, sx, sy); }
 
   bool valid() const { return valid_; }
-  int weight_x() const { return w_; }
-  int weight_y() const { return v_; }
+  /// The shape of the rectangles tried by the caller: the weights of the edge if there is one, else (1, 1).
+  int weight_x() const { return rays_.size() == 3 ? rays_[1].w : 1; }
+  int weight_y() const { return rays_.size() == 3 ? rays_[1].v : 1; }
+  /// Number of compact edges of the Newton polygon.
+  int edges() const { return valid_ ? int(rays_.size()) - 2 : 0; }
 
-  /// H (see above) for L0 = 2^e, with grad D != 0 on the rectangle [0, 2^(e w)] x [0, 2^(e v)] minus p; -1 if not
-  /// proved.
+  /// H (see above), with grad D != 0 on the rectangle [0, 2^(e wx)] x [0, 2^(e wy)] minus p (wx, wy the weights
+  /// above); -1 if not proved.
   int half_branches(int e) const {
     const auto it = tried_.find(e);
     if (it != tried_.end()) return it->second;
-    int half = -1;
-    // the charts meet along y = sigma x^(v/w), i.e. x = sigma^(-w/v) y^(w/v): sigma = 1, 2^v, 2^-v keep both ends
-    // dyadic (a branch along the split, e.g. the diagonal of a symmetric node, moves it)
-    for (int split = 0; split < 3; ++split) {
-      if (!valid_ || !scale(e)) break;
-      const int k = split == 0 ? 0 : (split == 1 ? 1 : -1);
-      const double hi[2] = {std::ldexp(1.0, k * v_), std::ldexp(1.0, -k * w_)};
-      // the roots at L = 0 do not depend on L0 (the edge's terms are not scaled): counted once per split
-      for (int chart = 0; chart < 2; ++chart)
-        if (roots_[split][chart] == -2) roots_[split][chart] = count_roots(chart, hi[chart]);
-      if (roots_[split][0] < 0 || roots_[split][1] < 0) continue;
-      // the first split whose roots are proved: a failing gradient test is about L0, not about the split
-      half = gradient_free(0, hi[0]) && gradient_free(1, hi[1]) ? roots_[split][0] + roots_[split][1] : -1;
-      break;
-    }
+    int half = roots();
+    for (std::size_t i = 0; half >= 0 && i + 1 < rays_.size(); ++i)
+      if (!gradient_free(i, e * weight_x(), e * weight_y())) half = -1;
     return tried_[e] = half;
   }
 
  private:
   using IA = CGAL::Interval_nt<>;
   struct Term {
-    int a, b, t;
+    int a, b;
     Rational lo, hi;  // the coefficient s_ab lies in [lo, hi]
+  };
+  struct Ray {
+    int w, v, N;  // the weight w a + v b of x^a y^b and its minimum over the support
+  };
+  struct Edge {
+    std::vector<Term> coefficients;  // of z^j in P_i (a = j); zero coefficients are exact zeros
   };
 
   void init(const std::vector<std::vector<Enclosed_coefficient>>& c, int sx, int sy) {
@@ -96,99 +108,109 @@ class Corner_blowup {
     for (std::size_t b = 0; !c.empty() && b < c[0].size() && b0 < 0; ++b)
       if (!c[0][b].zero) b0 = int(b);
     if (a0 < 1 || b0 < 1) return;  // D(p) != 0, or D vanishes on a side through p
-    const int g = std::gcd(a0, b0);
-    w_ = b0 / g;
-    v_ = a0 / g;
-    N_ = w_ * a0;
+    std::map<std::pair<int, int>, std::size_t> at;
     for (std::size_t a = 0; a < c.size(); ++a)
       for (std::size_t b = 0; b < c[a].size(); ++b) {
         const Enclosed_coefficient& x = c[a][b];
         if (x.zero) continue;
-        const int t = w_ * int(a) + v_ * int(b) - N_;
-        if (t < 0) return;  // a point of the support below the edge: more than one compact edge
         const bool odd = ((sx < 0) && (a % 2 == 1)) != ((sy < 0) && (b % 2 == 1));
-        terms_.push_back(odd ? Term{int(a), int(b), t, -x.hi, -x.lo} : Term{int(a), int(b), t, x.lo, x.hi});
-        max_slope_ = std::max({max_slope_, int(a), int(b)});
-        max_t_ = std::max(max_t_, t);
+        at[{int(a), int(b)}] = terms_.size();
+        terms_.push_back(odd ? Term{int(a), int(b), -x.hi, -x.lo} : Term{int(a), int(b), x.lo, x.hi});
       }
+    // the lower hull from (a0, 0) to (0, b0): from each vertex the point of least rise per step to the left
+    rays_.push_back(Ray{0, 1, 0});
+    for (int ca = a0, cb = 0; ca > 0;) {
+      int na = -1, nb = -1;
+      for (const Term& t : terms_) {
+        if (t.a >= ca) continue;
+        // (t.b - cb) / (ca - t.a) < (nb - cb) / (ca - na), ties to the farther point
+        const long lhs = long(t.b - cb) * (ca - na), rhs = long(nb - cb) * (ca - t.a);
+        if (na < 0 || lhs < rhs || (lhs == rhs && t.a < na)) na = t.a, nb = t.b;
+      }
+      const int g = std::gcd(ca - na, nb - cb);
+      const Ray r{(nb - cb) / g, (ca - na) / g, 0};
+      Edge edge;
+      for (int j = 0; j <= g; ++j) {
+        const auto f = at.find({ca - j * r.v, cb + j * r.w});
+        edge.coefficients.push_back(f == at.end() ? Term{j, 0, Rational(0), Rational(0)}
+                                                  : Term{j, 0, terms_[f->second].lo, terms_[f->second].hi});
+      }
+      rays_.push_back(Ray{r.w, r.v, r.w * ca + r.v * cb});
+      edges_.push_back(edge);
+      ca = na;
+      cb = nb;
+    }
+    rays_.push_back(Ray{1, 0, 0});
+    for (const Ray& r : rays_)
+      for (const Term& t : terms_)
+        if (r.w * t.a + r.v * t.b < r.N) return;  // cannot happen (the hull): a bug, not an input
     valid_ = true;
   }
-  struct Scaled {
-    int a, b, t;
-    IA s;
-  };
 
   static long exponent(const Rational& q) {  // about log2 |q|
     return CGAL::is_zero(q) ? LONG_MIN : long(q.numerator().bit_size()) - long(q.denominator().bit_size());
   }
-  // s = c L0^t 2^-E, E the exponent of the largest coefficient on the edge (t = 0)
-  bool scale(int e) const {
-    long E = LONG_MIN;
-    for (const Term& x : terms_)
-      if (x.t == 0) E = std::max({E, exponent(x.lo), exponent(x.hi)});
-    if (E == LONG_MIN) return false;
-    scaled_.clear();
-    for (const Term& x : terms_) {
-      const long shift = long(e) * x.t - E;  // times 2^shift, exactly
-      const Rational f = shift >= 0 ? Rational(two_power(shift)) : Rational(1) / Rational(two_power(-shift));
-      const std::pair<double, double> l = CGAL::to_interval(x.lo * f), h = CGAL::to_interval(x.hi * f);
-      if (!std::isfinite(l.first) || !std::isfinite(h.second)) return false;
-      scaled_.push_back(Scaled{x.a, x.b, x.t, IA(l.first, h.second)});
-    }
-    return true;
-  }
-
-  static Integer two_power(long k) {
+  static Rational two_power(long k) {
     Integer r(1), b(2);
-    for (; k > 0; k >>= 1, b *= b)
-      if (k & 1) r *= b;
-    return r;
-  }
-  static IA power(const IA& x, int k) {
-    IA r(1);
-    for (int i = 0; i < k; ++i) r *= x;
-    return r;
+    for (long n = std::labs(k); n > 0; n >>= 1, b *= b)
+      if (n & 1) r *= b;
+    return k >= 0 ? Rational(r) : Rational(1) / Rational(r);
   }
   static bool has_zero(const IA& x) { return x.inf() <= 0 && x.sup() >= 0; }
   static int sign(const IA& x) { return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0); }
-
-  // kind 0: E; 1: GX (the derivative along x, up to sx); 2: GY. Chart 0: (L, m) of A, chart 1: (L, n) of B.
-  // Powers of the (nonnegative) arguments are tabulated once per call.
-  IA evaluate(int chart, int kind, const IA& L, const IA& s) const {
-    std::vector<IA>& ps = powers_s_;
-    std::vector<IA>& pl = powers_l_;
-    ps.assign(std::size_t(max_slope_ + 1), IA(1));
-    pl.assign(std::size_t(max_t_ + 1), IA(1));
-    for (std::size_t i = 1; i < ps.size(); ++i) ps[i] = ps[i - 1] * s;
-    for (std::size_t i = 1; i < pl.size(); ++i) pl[i] = pl[i - 1] * L;
-    IA r(0);
-    for (const Scaled& x : scaled_) {
-      const int along = chart == 0 ? x.b : x.a;  // the power of the chart's slope
-      const int factor = kind == 0 ? 1 : (kind == 1 ? x.a : x.b);
-      if (factor == 0) continue;
-      // d/dx in chart B (x = n L^w) lowers the power of n; d/dy in chart A (y = m L^v) lowers that of m
-      const bool lowers = (chart == 0 && kind == 2) || (chart == 1 && kind == 1);
-      const int k = lowers ? along - 1 : along;
-      r += x.s * double(factor) * ps[std::size_t(k)] * pl[std::size_t(x.t)];
-    }
-    return r;
+  // [lo, hi] 2^shift as a double interval; false on overflow
+  static bool scaled(const Term& t, long shift, IA& out) {
+    const Rational f = two_power(shift);
+    const std::pair<double, double> l = CGAL::to_interval(t.lo * f), h = CGAL::to_interval(t.hi * f);
+    if (!std::isfinite(l.first) || !std::isfinite(h.second)) return false;
+    out = IA(l.first, h.second);
+    return true;
   }
 
-  // simple roots of the chart's initial form (L = 0) with slope in (0, hi); -1 if not proved (a root at hi or a
-  // multiple one)
-  int count_roots(int chart, double hi) const {
-    const IA L0(0);
-    if (sign(evaluate(chart, 0, L0, IA(0))) == 0 || sign(evaluate(chart, 0, L0, IA(hi))) == 0) return -1;
-    const int slope_kind = chart == 0 ? 2 : 1;  // d/dm of E_A is GY_A; d/dn of E_B is GX_B
+  // Sum of H over the edges, each edge polynomial's positive roots proved simple; -1 if not proved. Cached.
+  int roots() const {
+    if (roots_ != -2) return roots_;
+    int total = valid_ ? 0 : -1;
+    for (std::size_t i = 0; i < edges_.size() && total >= 0; ++i) {
+      int n = -1;
+      for (int k : {0, 1, -1}) {  // split (0, oo) at z = 2^k
+        const int below = count_roots(edges_[i], false, k), above = below < 0 ? -1 : count_roots(edges_[i], true, -k);
+        if (below >= 0 && above >= 0) {
+          n = below + above;
+          break;
+        }
+      }
+      total = n < 0 ? -1 : total + n;
+    }
+    return roots_ = total;
+  }
+
+  // Simple roots of P (or of z^g P(1/z) if reversed) in (0, 2^k], none at 2^k; -1 if not proved.
+  static int count_roots(const Edge& edge, bool reversed, int k) {
+    const std::size_t g = edge.coefficients.size() - 1;
+    long E = LONG_MIN;
+    for (const Term& t : edge.coefficients) E = std::max({E, exponent(t.lo), exponent(t.hi)});
+    std::vector<IA> p(g + 1), dp(g + 1, IA(0));
+    for (std::size_t j = 0; j <= g; ++j)
+      if (!scaled(edge.coefficients[reversed ? g - j : j], -E, p[j])) return -1;
+    for (std::size_t j = 1; j <= g; ++j) dp[j - 1] = p[j] * double(j);
+    auto eval = [](const std::vector<IA>& c, const IA& z) {
+      IA r(0);
+      for (std::size_t j = c.size(); j-- > 0;) r = r * z + c[j];
+      return r;
+    };
+    const double hi = std::ldexp(1.0, k);
+    if (sign(eval(p, IA(0))) == 0 || sign(eval(p, IA(hi))) == 0) return -1;
     std::vector<std::array<double, 2>> stack{{0.0, hi}};
     int roots = 0;
     for (int pieces = 0; !stack.empty(); ++pieces) {
       const auto M = stack.back();
       stack.pop_back();
       if (pieces > 4000 || !(M[1] - M[0] > hi * 0x1p-30)) return -1;
-      if (!has_zero(evaluate(chart, 0, L0, IA(M[0], M[1])))) continue;
-      if (!has_zero(evaluate(chart, slope_kind, L0, IA(M[0], M[1])))) {
-        const int s0 = sign(evaluate(chart, 0, L0, IA(M[0]))), s1 = sign(evaluate(chart, 0, L0, IA(M[1])));
+      const IA Z(M[0], M[1]);
+      if (!has_zero(eval(p, Z))) continue;
+      if (!has_zero(eval(dp, Z))) {
+        const int s0 = sign(eval(p, IA(M[0]))), s1 = sign(eval(p, IA(M[1])));
         if (s0 != 0 && s1 != 0) {
           roots += s0 != s1;
           continue;
@@ -201,18 +223,58 @@ class Corner_blowup {
     return roots;
   }
 
-  // (GX, GY) has no common zero on [0, 1] (L / L0) x [0, hi] (slope)
-  bool gradient_free(int chart, double hi) const {
-    std::vector<std::array<double, 4>> stack{{0.0, 1.0, 0.0, hi}};
+  // (F_i, G_i) has no common zero on the chart C_i's region covering [0, 2^ex] x [0, 2^ey] (see above).
+  bool gradient_free(std::size_t i, int ex, int ey) const {
+    const Ray &R = rays_[i], &S = rays_[i + 1];
+    // (ex, ey) = sigma R + tau S, rounded up
+    const long det = long(R.w) * S.v - long(S.w) * R.v;
+    const long sn = long(ex) * S.v - long(ey) * S.w, tn = long(ey) * R.w - long(ex) * R.v;
+    auto ceil_div = [](long n, long d) { return d < 0 ? ceil_div_pos(-n, -d) : ceil_div_pos(n, d); };
+    const long sigma = ceil_div(sn, det), tau = ceil_div(tn, det);
+    struct Scaled {
+      int p, q;  // powers of s / 2^sigma and t / 2^tau in F (a s_ab) or G (b s_ab)
+      IA c;
+    };
+    std::vector<Scaled> F, G;
+    long E = LONG_MIN;
+    for (const Term& t : terms_) {
+      const long p = long(R.w) * t.a + long(R.v) * t.b - R.N, q = long(S.w) * t.a + long(S.v) * t.b - S.N;
+      E = std::max({E, exponent(t.lo) + p * sigma + q * tau, exponent(t.hi) + p * sigma + q * tau});
+    }
+    int max_p = 0, max_q = 0;
+    for (const Term& t : terms_) {
+      long p = long(R.w) * t.a + long(R.v) * t.b - R.N, q = long(S.w) * t.a + long(S.v) * t.b - S.N;
+      for (int kind = 0; kind < 2; ++kind) {
+        const int factor = kind == 0 ? t.a : t.b;
+        if (factor == 0) continue;
+        // G_0 is divided by s (the axis y = 0), F_k by t (the axis x = 0)
+        const long pp = p - (kind == 1 && i == 0 ? 1 : 0), qq = q - (kind == 0 && i + 2 == rays_.size() ? 1 : 0);
+        IA c;
+        if (pp < 0 || qq < 0 || !scaled(t, pp * sigma + qq * tau - E, c)) return false;
+        (kind == 0 ? F : G).push_back(Scaled{int(pp), int(qq), c * double(factor)});
+        max_p = std::max(max_p, int(pp));
+        max_q = std::max(max_q, int(qq));
+      }
+    }
+    std::vector<IA> ps(std::size_t(max_p + 1)), qs(std::size_t(max_q + 1));
+    auto eval = [&](const std::vector<Scaled>& f) {
+      IA r(0);
+      for (const Scaled& x : f) r += x.c * ps[std::size_t(x.p)] * qs[std::size_t(x.q)];
+      return r;
+    };
+    std::vector<std::array<double, 4>> stack{{0.0, 1.0, 0.0, 1.0}};
     for (int pieces = 0; !stack.empty(); ++pieces) {
       const auto P = stack.back();
       stack.pop_back();
-      if (pieces > 4000 || !(P[1] - P[0] > 0x1p-24) || !(P[3] - P[2] > hi * 0x1p-24)) return false;
-      const IA L(P[0], P[1]), s(P[2], P[3]);
-      if (!has_zero(evaluate(chart, 1, L, s)) || !has_zero(evaluate(chart, 2, L, s))) continue;
-      const bool along_L = P[1] - P[0] >= (P[3] - P[2]) / hi;
-      const double mid = along_L ? P[0] + 0.4142135623730951 * (P[1] - P[0]) : P[2] + 0.4142135623730951 * (P[3] - P[2]);
-      if (along_L) {
+      if (pieces > 4000 || !(P[1] - P[0] > 0x1p-24) || !(P[3] - P[2] > 0x1p-24)) return false;
+      const IA s(P[0], P[1]), t(P[2], P[3]);
+      ps[0] = qs[0] = IA(1);
+      for (std::size_t k = 1; k < ps.size(); ++k) ps[k] = ps[k - 1] * s;
+      for (std::size_t k = 1; k < qs.size(); ++k) qs[k] = qs[k - 1] * t;
+      if (!has_zero(eval(F)) || !has_zero(eval(G))) continue;
+      const bool along_s = P[1] - P[0] >= P[3] - P[2];
+      const double mid = along_s ? P[0] + 0.4142135623730951 * (P[1] - P[0]) : P[2] + 0.4142135623730951 * (P[3] - P[2]);
+      if (along_s) {
         stack.push_back({P[0], mid, P[2], P[3]});
         stack.push_back({mid, P[1], P[2], P[3]});
       } else {
@@ -222,14 +284,14 @@ class Corner_blowup {
     }
     return true;
   }
+  static long ceil_div_pos(long n, long d) { return n >= 0 ? (n + d - 1) / d : -((-n) / d); }
 
   bool valid_ = false;
-  int w_ = 1, v_ = 1, N_ = 0, max_slope_ = 0, max_t_ = 0;
   std::vector<Term> terms_;
-  mutable std::vector<Scaled> scaled_;
-  mutable std::vector<IA> powers_s_, powers_l_;
+  std::vector<Ray> rays_;    // R_0 = (0, 1), the edges' normals from the x axis, R_(k+1) = (1, 0)
+  std::vector<Edge> edges_;  // e_1 .. e_k
+  mutable int roots_ = -2;   // roots() (-2: not yet)
   mutable std::map<int, int> tried_;  // half_branches(e), by e
-  mutable int roots_[3][2] = {{-2, -2}, {-2, -2}, {-2, -2}};  // count_roots by split and chart (-2: not yet)
 };
 
 }  // namespace internal
