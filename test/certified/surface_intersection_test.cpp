@@ -1174,3 +1174,76 @@ TEST_CASE("teapot: diagonal neighbours touching at a corner are certified, the c
         if (q.genuine) CHECK(std::fabs(q.projection[0] - cu) + std::fabs(q.projection[1] - cv) < 1e-9);
   }
 }
+
+// The spout's patches: 16 and 17 are the two halves of the lower tube, 18 and 19 of the upper one
+// (teapot32_topology.txt: "16(spout).col0 (v=0) == 17(spout).col3 (v=1)", "16(spout).col3 (v=1) == 17(spout).col0
+// (v=0)", "16(spout).row3 (u=1) == 18(spout).row0", "17(spout).row3 (u=1) == 19(spout).row0", and 18, 19 glued along
+// both seams). Independent facts used: 16 x 17 meet along the two seams only, so both sides t = 0, 1 are shared
+// curves and nothing else is genuine; there the rest of D meets each seam at a singular point inside the side
+// (resolve_edge_point); 16 x 19 and 17 x 18 meet at the two ends of the joint row only, two corners of the (u, t) box,
+// where the Newton polygon of D has two edges (corner_blowup.h).
+TEST_CASE("teapot spout: singular points inside a shared side and two-edge corners are certified",
+          "[surface][teapot][edge_point]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  {
+    const Surface_locus L = intersection_locus(doc.patches[16], doc.patches[17]);
+    CHECK(L.topology_method == "subdivision");
+    REQUIRE(L.edge_lines.size() == 2);
+    for (int side : {0, 2}) {
+      const Locus_edge_line* seam = edge_line(L, side);
+      REQUIRE(seam);
+      CHECK(seam->cause == Locus_edge_line::shared_curve);
+      CHECK(seam->partner_side == 2 - side);  // t = 0 with the first patch's v = 1, t = 1 with v = 0
+      CHECK(seam->status_proved);
+    }
+    std::size_t on_sides = 0;
+    for (const auto& v : L.topology.vertices)
+      if (v.singular_on_boundary) {
+        ++on_sides;
+        CHECK(v.kind == Curve_topology_vertex::singular);
+        CHECK((v.v == 0 || v.v == 1));  // on a seam, exactly
+        CHECK(v.u > 0.01);
+        CHECK(v.u < 0.99);               // not at a corner
+        CHECK(v.u_hi - v.u_lo < 1e-12);  // an isolated root on the side
+        // D of the rest (the seams' factors removed) and its gradient vanish there, in floating point
+        const auto& D = internal::box_edge_lines(L.equation.square_free, Parameter_box{}).rest;
+        double d = 0, du = 0, dv = 0, scale = 0;
+        for (int j = 0; j <= D.degree(); ++j)
+          for (int i = 0; i <= D[j].degree(); ++i) {
+            const double c = CGAL::to_double(D[j][i]), m = std::pow(v.u, i) * std::pow(v.v, j);
+            d += c * m;
+            if (i > 0) du += c * i * std::pow(v.u, i - 1) * std::pow(v.v, j);
+            if (j > 0) dv += c * j * std::pow(v.u, i) * std::pow(v.v, j - 1);
+            scale += std::fabs(c) * m * (1 + i + j);
+          }
+        CHECK(std::fabs(d) < 1e-9 * scale);
+        CHECK(std::fabs(du) < 1e-6 * scale);
+        CHECK(std::fabs(dv) < 1e-6 * scale);
+      }
+    CHECK(on_sides == 2);  // one on each seam
+    for (const auto& arc : L.arcs)
+      for (const auto& q : arc.points)  // the ends on the seams are genuine points (of the seams)
+        if (q.genuine) CHECK(std::min(q.projection[1], 1 - q.projection[1]) < 1e-12);
+  }
+  for (const auto& pr : {std::make_pair(16, 19), std::make_pair(17, 18)}) {
+    INFO("patches " << pr.first << ", " << pr.second);
+    const Surface_locus L = intersection_locus(doc.patches[std::size_t(pr.first)], doc.patches[std::size_t(pr.second)]);
+    CHECK(L.topology_method == "subdivision");
+    CHECK(L.edge_lines.empty());
+    REQUIRE(L.contacts.size() == 2);
+    for (const auto& c : L.contacts) CHECK_FALSE(c.shared_curve);
+    std::size_t corners = 0;
+    for (const auto& v : L.topology.vertices)
+      if (v.singular_on_boundary) {
+        ++corners;
+        CHECK(v.u == 1);  // the first patch's joint row
+        CHECK((v.v == 0 || v.v == 1));
+        CHECK(v.u_lo == v.u_hi);
+      }
+    CHECK(corners == 2);
+    for (const auto& arc : L.arcs)
+      for (const auto& q : arc.points)
+        if (q.genuine) CHECK(std::fabs(q.projection[0] - 1) + std::min(q.projection[1], 1 - q.projection[1]) < 1e-9);
+  }
+}
