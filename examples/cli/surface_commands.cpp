@@ -252,7 +252,8 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
   for (const auto& v : L.topology.vertices) {
     if (v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated)
       s << "<circle cx='" << X(v.u) << "' cy='" << Y(v.v) << "' r='6' fill='none' stroke='red' stroke-width='2'/>\n"
-        << "<text x='" << (X(v.u) > W / 2 ? X(v.u) - 8 : X(v.u) + 8) << "' y='" << Y(v.v) - 8
+        << "<text x='" << (X(v.u) > W / 2 ? X(v.u) - 8 : X(v.u) + 8) << "' y='"
+        << (Y(v.v) < 70 ? Y(v.v) + 20 : Y(v.v) - 8)  // below a point near the top: the legend is above the box
         << "' font-size='12' fill='red'" << (X(v.u) > W / 2 ? " text-anchor='end'" : "") << ">" << v.branches
         << " branches (" << v.u << ", " << v.v << ")</text>\n";
     if (v.on_boundary)
