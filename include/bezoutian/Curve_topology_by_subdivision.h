@@ -1584,6 +1584,8 @@ class Subdivision_topology {
     Rational edge_c;
     Algebraic_real edge_position;
     std::shared_ptr<const Corner_blowup> halves[2];
+    // an exact rational point whose tangent cone is not ordinary: its four quadrants blown up, on first use
+    std::shared_ptr<const Corner_blowup> quadrants[4];
   };
 
   // The domain's corners where D = 0 is singular (D, D_u, D_v vanish exactly), with the order of D there: where
@@ -1711,7 +1713,12 @@ class Subdivision_topology {
     for (int order = 0; order <= max_order; ++order)
       for (int i = 0; i <= order; ++i)
         if (!CGAL::is_zero(taylor_coefficient(ru, rv, i, order - i))) {
-          if (order < 3) return -1;  // not on the curve, smooth, or a double point (resolve_singular's case)
+          if (order < 2) return -1;  // not on the curve, or smooth
+          if (order == 2) {  // a node or an acnode is resolve_singular's case; a double tangent (a cusp) is not
+            const Rational c20 = taylor_coefficient(ru, rv, 2, 0), c11 = taylor_coefficient(ru, rv, 1, 1),
+                           c02 = taylor_coefficient(ru, rv, 0, 2);
+            if (!CGAL::is_zero(c11 * c11 - 4 * c20 * c02)) return -1;
+          }
           multiple_.push_back(Multiple_point{Known_multiple_point{Parameter_box{ru, ru, rv, rv}, order}, nullptr, false});
           return int(multiple_.size()) - 1;
         }
@@ -1798,7 +1805,7 @@ class Subdivision_topology {
         if (lines < 0) r /= 8;
       }
     }
-    if (lines < 0) return false;
+    if (lines < 0) return resolve_quadrants(B, mp);  // not ordinary (or r too large): at a rational point, quadrants
     std::vector<Crossing> cr;
     std::vector<std::size_t> isolated_corners;
     if (!crossings_around(B, cr, isolated_corners)) return false;
@@ -1822,26 +1829,12 @@ class Subdivision_topology {
   // (H = 0: the curve passes p from outside, an isolated point of the locus in the domain).
   bool resolve_corner(Box& B, Multiple_point& mp) {
     const Parameter_box& K = mp.known.enclosure;
-    const Corner_blowup& blowup = *mp.corner_blowup;
-    if (!blowup.valid()) return false;
+    if (!mp.corner_blowup->valid()) return false;
     const int sx = K.u0 == B.u0 ? 1 : -1, sy = K.v0 == B.v0 ? 1 : -1;
     const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
-    // the rectangle [0, L0^w] x [0, L0^v] of the blow-up, L0 = 2^e: first one that covers B
-    auto extent = [](int e, int weight) {  // 2^(e weight), exactly
-      Rational r(1);
-      for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
-      return r;
-    };
-    int e = int(std::ceil(std::max(std::log2(CGAL::to_double(wu)) / blowup.weight_x(),
-                                   std::log2(CGAL::to_double(wv)) / blowup.weight_y())));
-    while (extent(e, blowup.weight_x()) < wu || extent(e, blowup.weight_y()) < wv) ++e;
-    int half = -1;
-    for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
-      half = blowup.half_branches(e);
-      if (half < 0) e -= attempt == 0 ? 1 : 2;
-    }
+    Rational rx, ry;
+    const int half = quadrant_half_branches({mp.corner_blowup.get()}, wu, wv, rx, ry);
     if (half < 0) return false;
-    const Rational rx = extent(e, blowup.weight_x()), ry = extent(e, blowup.weight_y());
     std::vector<Crossing> cr;
     std::vector<std::size_t> isolated_corners;
     singular_corner_ = &K;
@@ -1856,6 +1849,68 @@ class Subdivision_topology {
     for (std::size_t n : isolated_corners) touch_[n] = 0;
     connect_to_point(B, cr, node_singular(singular_.size() - 1), sx > 0 ? 0 : 1, sy > 0 ? 0 : 1);
     return true;
+  }
+
+  // Box B around a known multiple point p at an exact rational point (K a point, strictly inside B) whose tangent
+  // cone is not ordinary (a cusp, a tacnode: a multiple line of the cone): the four quadrants at p blown up each
+  // (internal/corner_blowup.h, on exact Taylor coefficients; valid when D(x, 0) and D(0, y) are not identically
+  // zero at p, i.e. no branch along the axis lines through p, so none of the half-branches lies on an axis). The
+  // germ of D = 0 at p is the sum H of their half-branches, grad D != 0 on the rectangle around p minus p; grad
+  // D != 0 on the rest of B and exactly H crossings of B's edges: then D = 0 in B is the H arcs from p.
+  bool resolve_quadrants(Box& B, Multiple_point& mp) {
+    const Parameter_box& K = mp.known.enclosure;
+    if (!(K.u0 == K.u1 && K.v0 == K.v1)) return false;
+    if (!mp.quadrants[0]) {
+      const auto c = taylor_coefficients(K.u0, K.v0);
+      for (int q = 0; q < 4; ++q)
+        mp.quadrants[q] = std::make_shared<const Corner_blowup>(c, q % 2 == 0 ? 1 : -1, q < 2 ? 1 : -1);
+    }
+    for (const auto& q : mp.quadrants)
+      if (!q->valid()) return false;
+    Rational rx, ry;
+    const int half = quadrant_half_branches(
+        {mp.quadrants[0].get(), mp.quadrants[1].get(), mp.quadrants[2].get(), mp.quadrants[3].get()},
+        std::max(K.u0 - B.u0, B.u1 - K.u0), std::max(K.v0 - B.v0, B.v1 - K.v0), rx, ry);
+    if (half < 0) return false;
+    std::vector<Crossing> cr;
+    std::vector<std::size_t> isolated_corners;
+    if (!crossings_around(B, cr, isolated_corners) || cr.size() != std::size_t(half)) return false;
+    const Parameter_box S{K.u0 - rx, K.u0 + rx, K.v0 - ry, K.v0 + ry};
+    const bool covers = S.u0 <= B.u0 && B.u1 <= S.u1 && S.v0 <= B.v0 && B.v1 <= S.v1;
+    if (!covers && !no_critical_point_outside(B, S)) return false;
+    singular_.push_back(Singular_point{K.u0, K.u1, K.v0, K.v1, half == 0, half});
+    for (std::size_t n : isolated_corners) touch_[n] = 0;
+    const Rational wu = B.u1 - B.u0, wv = B.v1 - B.v0;
+    connect_to_point(B, cr, node_singular(singular_.size() - 1), CGAL::to_double((K.u0 - B.u0) / wu),
+                     CGAL::to_double((K.v0 - B.v0) / wv));
+    return true;
+  }
+
+  // The blow-ups q of quadrants at one point (they share the Newton polygon, so the weights wx, wy): the sum of
+  // their half-branches H on the rectangles [0, rx] x [0, ry], rx = 2^(e wx), ry = 2^(e wy), for the first e that
+  // reaches (ru, rv), else e - 1, e - 3, e - 5; -1 if none is proved.
+  static int quadrant_half_branches(const std::vector<const Corner_blowup*>& q, const Rational& ru, const Rational& rv,
+                                    Rational& rx, Rational& ry) {
+    const int wx = q.front()->weight_x(), wy = q.front()->weight_y();
+    auto extent = [](int e, int weight) {  // 2^(e weight), exactly
+      Rational r(1);
+      for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
+      return r;
+    };
+    int e = int(std::ceil(std::max(std::log2(CGAL::to_double(ru)) / wx, std::log2(CGAL::to_double(rv)) / wy)));
+    while (extent(e, wx) < ru || extent(e, wy) < rv) ++e;
+    int half = -1;
+    for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
+      half = 0;
+      for (std::size_t k = 0; k < q.size() && half >= 0; ++k) {
+        const int n = q[k]->half_branches(e);
+        half = n < 0 ? -1 : half + n;
+      }
+      if (half < 0) e -= attempt == 0 ? 1 : 2;
+    }
+    rx = extent(e, wx);
+    ry = extent(e, wy);
+    return half;
   }
 
   // Where the edge point mp lies on B: -1 not on B; 0 strictly inside B's edge along the side; 1 at that edge's
@@ -1894,28 +1949,14 @@ class Subdivision_topology {
     const Rational& hi = vertical ? B.v1 : B.u1;
     const Rational& klo = vertical ? K.v0 : K.u0;
     const Rational& khi = vertical ? K.v1 : K.u1;
-    const int wa = vertical ? mp.halves[0]->weight_y() : mp.halves[0]->weight_x();  // weight along the side
-    const int wc = vertical ? mp.halves[0]->weight_x() : mp.halves[0]->weight_y();  // across it
     const Rational along_reach = std::max(khi - lo, hi - klo);
     const Rational across_reach = vertical ? B.u1 - B.u0 : B.v1 - B.v0;
-    auto extent = [](int e, int weight) {  // 2^(e weight), exactly
-      Rational r(1);
-      for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
-      return r;
-    };
-    int e = int(std::ceil(std::max(std::log2(CGAL::to_double(along_reach)) / wa, std::log2(CGAL::to_double(across_reach)) / wc)));
-    while (extent(e, wa) < along_reach || extent(e, wc) < across_reach) ++e;
-    int half = -1;
-    for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
-      half = 0;
-      for (int h = 0; h < 2 && half >= 0; ++h) {
-        const int n = mp.halves[h]->half_branches(e);
-        half = n < 0 ? -1 : half + n;
-      }
-      if (half < 0) e -= attempt == 0 ? 1 : 2;
-    }
+    Rational rx, ry;
+    const int half = quadrant_half_branches({mp.halves[0].get(), mp.halves[1].get()}, vertical ? across_reach : along_reach,
+                                            vertical ? along_reach : across_reach, rx, ry);
     if (half < 0) return false;
-    const Rational ra = extent(e, wa), rc = extent(e, wc);
+    const Rational& ra = vertical ? ry : rx;
+    const Rational& rc = vertical ? rx : ry;
     std::vector<Crossing> cr;
     std::vector<std::size_t> isolated_corners;
     singular_edge_point_ = &mp;

@@ -383,7 +383,7 @@ TEST_CASE("subdivision: irrational nodes are certified by a witness, and not cer
     }
 }
 
-TEST_CASE("subdivision: multiple points at small rationals are found and resolved; cusps are not certified",
+TEST_CASE("subdivision: multiple points and cusps at small rationals are found and resolved",
           "[topology][subdivision]") {
   // a triple point at (1/2, 1/2) (three lines: the Hessian vanishes there), found at the simplest rational of a
   // deep box and proved by exact Taylor coefficients: 6 arcs to the 6 boundary points, one component
@@ -412,9 +412,31 @@ TEST_CASE("subdivision: multiple points at small rationals are found and resolve
   const Integer K = Integer(1) << 30;
   r = subdivide_curve_in_box((K * u - K * v - 1) * (K * u + K * v - K - 1) * (2 * K * u - K - 2), Parameter_box{});
   CHECK_FALSE(r.certified);
-  // a cusp at (1/3, 1/3): (3v - 1)^2 = (3u - 1)^3 (a double tangent: not an ordinary multiple point)
-  r = subdivide_curve_in_box((3 * v - 1) * (3 * v - 1) - (3 * u - 1) * (3 * u - 1) * (3 * u - 1), Parameter_box{});
-  CHECK_FALSE(r.certified);
+  // a cusp at (1/3, 1/3): (3v - 1)^2 = (3u - 1)^3, a double tangent (not an ordinary multiple point): found at the
+  // simplest rational (order 2, degenerate Hessian) and resolved by its four quadrants; its two half-branches
+  // v = 1/3 +- (3u - 1)^(3/2) / 3 leave the square at (2/3, 0) and ((1 + 4^(1/3)) / 3, 1)
+  const P2 cusp = (3 * v - 1) * (3 * v - 1) - (3 * u - 1) * (3 * u - 1) * (3 * u - 1);
+  r = subdivide_curve_in_box(cusp, Parameter_box{});
+  INFO(r.reason);
+  REQUIRE(r.certified);
+  REQUIRE(r.topology.number_of_singular_points() == 1);
+  for (const auto& x : r.topology.vertices)
+    if (x.kind == Curve_topology_vertex::singular) {
+      CHECK(x.u_lo <= 1.0 / 3);  // the exact point 1/3, rounded outward
+      CHECK(1.0 / 3 <= x.u_hi);
+      CHECK(x.u_hi - x.u_lo < 1e-15);
+      CHECK(x.v_lo <= 1.0 / 3);
+      CHECK(1.0 / 3 <= x.v_hi);
+      CHECK(x.half_branches == 2);
+      CHECK(x.branches == 1);
+    } else {
+      CHECK(x.on_boundary);
+      CHECK((std::fabs(x.u - 2.0 / 3) + std::fabs(x.v) < 1e-9 ||
+             std::fabs(x.u - (1 + std::cbrt(4.0)) / 3) + std::fabs(x.v - 1) < 1e-9));
+    }
+  CHECK(r.topology.number_of_boundary_points() == 2);
+  CHECK(r.topology.components.size() == 1);
+  check_samples(cusp, r.topology, 1e-9);
   // bad input
   CHECK_THROWS_AS(subdivide_curve_in_box(P2(0), Parameter_box{}), Invalid_input);
   CHECK_THROWS_AS(subdivide_curve_in_box(u, box(Q(1), Q(0), Q(0), Q(1))), Invalid_input);
