@@ -45,8 +45,9 @@ struct Curve_topology_vertex {
   /// (kind boundary, one arc) or not (kind isolated). A corner that the curve crosses transversally from outside
   /// is kind isolated with this flag false.
   bool tangent_to_boundary = false;
-  /// On the boundary: D = 0 is singular here (a singular point of D at a domain corner; `branches` counts the
-  /// half-branches into the domain, 0 if only the point itself is in it).
+  /// On the boundary: D = 0 is singular here (a singular point of D at a domain corner or inside a side, where
+  /// the enclosure is its isolating interval on that side; `branches` counts the half-branches into the domain, 0
+  /// if only the point itself is in it).
   bool singular_on_boundary = false;
 };
 
