@@ -760,20 +760,25 @@ class Subdivision_topology {
   // crossing is at an end (a box corner) or multiple (tangency with the line).
   // `touches` (only for a domain edge of a box that is simple across it): multiple roots strictly inside the edge
   // are allowed there (see contact_with_domain_edge) instead of making the box unresolved.
+  // A singular point of the domain's boundary that ends half-branches of the box being resolved (resolve_corner,
+  // resolve_edge_point): not a crossing of the box's edges through it.
+  struct Excluded_point {
+    Algebraic_real u, v;
+    bool on(bool vertical, const Rational& c, const Algebraic_real& x) const {
+      return vertical ? u.compare(c) == 0 && x.compare(v) == 0 : v.compare(c) == 0 && x.compare(u) == 0;
+    }
+  };
+
   bool edge_crossings(bool vertical, const Rational& c, const Rational& lo, const Rational& hi, bool sort_by_u,
-                      std::vector<Crossing>& out, std::vector<Touch>* touches = nullptr) {
+                      std::vector<Crossing>& out, std::vector<Touch>* touches = nullptr,
+                      const Excluded_point* excluded = nullptr) {
     const Line& L = line(vertical, c);
     if (failed_) return false;
     for (std::size_t k = 0; k < L.roots.size(); ++k) {
       const Algebraic_real& x = L.roots[k].root;
       const int cl = x.compare(lo), ch = x.compare(hi);
       if (cl < 0 || ch > 0) continue;
-      if (singular_corner_ && (cl == 0 || ch == 0) && (vertical ? c == singular_corner_->u0 : c == singular_corner_->v0) &&
-          x.compare(vertical ? singular_corner_->v0 : singular_corner_->u0) == 0)
-        continue;  // the singular corner being resolved (resolve_corner) is not a crossing
-      if (singular_edge_point_ && vertical == singular_edge_point_->edge_vertical && c == singular_edge_point_->edge_c &&
-          x.compare(singular_edge_point_->edge_position) == 0)
-        continue;  // nor is the singular edge point being resolved (resolve_edge_point)
+      if (excluded && excluded->on(vertical, c, x)) continue;
       if (L.roots[k].multiplicity > 1) {
         // at a domain corner, on an edge across which the box is simple: the curve is tangent to that edge at the
         // corner, decided by corner_crossing
@@ -1521,14 +1526,18 @@ class Subdivision_topology {
 
   // The exact crossings of D = 0 with the four edges of B around a point inside it (sorted by u on horizontal
   // edges), with the domain corners among B's corners; false if an edge or a corner cannot be handled.
-  bool crossings_around(const Box& B, std::vector<Crossing>& cr, std::vector<std::size_t>& isolated_corners) {
-    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr) || !edge_crossings(true, B.u1, B.v0, B.v1, true, cr) ||
-        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr) || !edge_crossings(false, B.v1, B.u0, B.u1, true, cr))
+  // `excluded`: a singular point of the domain's boundary on B's edges, left out.
+  bool crossings_around(const Box& B, std::vector<Crossing>& cr, std::vector<std::size_t>& isolated_corners,
+                        const Excluded_point* excluded = nullptr) {
+    if (!edge_crossings(true, B.u0, B.v0, B.v1, true, cr, nullptr, excluded) ||
+        !edge_crossings(true, B.u1, B.v0, B.v1, true, cr, nullptr, excluded) ||
+        !edge_crossings(false, B.v0, B.u0, B.u1, true, cr, nullptr, excluded) ||
+        !edge_crossings(false, B.v1, B.u0, B.u1, true, cr, nullptr, excluded))
       return false;
     for (const Rational* cu : {&B.u0, &B.u1})
       for (const Rational* cv : {&B.v0, &B.v1})
         if ((*cu == box_.u0 || *cu == box_.u1) && (*cv == box_.v0 || *cv == box_.v1) &&
-            !(singular_corner_ && *cu == singular_corner_->u0 && *cv == singular_corner_->v0) &&
+            !(excluded && excluded->u.compare(*cu) == 0 && excluded->v.compare(*cv) == 0) &&
             !corner_crossing(B, *cu, *cv, true, 0, cr, isolated_corners))
           return false;
     return true;
@@ -1837,10 +1846,8 @@ class Subdivision_topology {
     if (half < 0) return false;
     std::vector<Crossing> cr;
     std::vector<std::size_t> isolated_corners;
-    singular_corner_ = &K;
-    const bool ok = crossings_around(B, cr, isolated_corners);
-    singular_corner_ = nullptr;
-    if (!ok || cr.size() != std::size_t(half)) return false;
+    const Excluded_point corner{Algebraic_real(K.u0), Algebraic_real(K.v0)};
+    if (!crossings_around(B, cr, isolated_corners, &corner) || cr.size() != std::size_t(half)) return false;
     if ((rx < wu || ry < wv) && !no_critical_point_outside(B, Parameter_box{K.u0 - rx, K.u0 + rx, K.v0 - ry, K.v0 + ry}))
       return false;
     Singular_point p{K.u0, K.u1, K.v0, K.v1, half == 0, half};
@@ -1959,10 +1966,9 @@ class Subdivision_topology {
     const Rational& rc = vertical ? rx : ry;
     std::vector<Crossing> cr;
     std::vector<std::size_t> isolated_corners;
-    singular_edge_point_ = &mp;
-    const bool ok = crossings_around(B, cr, isolated_corners);
-    singular_edge_point_ = nullptr;
-    if (!ok || cr.size() != std::size_t(half)) return false;
+    const Excluded_point point = vertical ? Excluded_point{Algebraic_real(mp.edge_c), mp.edge_position}
+                                          : Excluded_point{mp.edge_position, Algebraic_real(mp.edge_c)};
+    if (!crossings_around(B, cr, isolated_corners, &point) || cr.size() != std::size_t(half)) return false;
     // the proved rectangle, shrunk by the enclosure of p (it holds p's exact rectangle)
     const Parameter_box S = vertical ? Parameter_box{mp.edge_c - rc, mp.edge_c + rc, khi - ra, klo + ra}
                                      : Parameter_box{khi - ra, klo + ra, mp.edge_c - rc, mp.edge_c + rc};
@@ -2398,8 +2404,6 @@ class Subdivision_topology {
   std::vector<Arc> arcs_;
   std::vector<Singular_point> singular_;
   std::vector<Multiple_point> multiple_;
-  const Parameter_box* singular_corner_ = nullptr;  // set while resolve_corner collects the crossings around it
-  const Multiple_point* singular_edge_point_ = nullptr;  // set while resolve_edge_point collects them
   std::set<std::pair<Rational, Rational>> rational_points_tested_;
   static constexpr int rational_multiple_depth = 8;  // from this depth on, boxes look for rational multiple points
   std::vector<Parameter_box> off_curve_;  // boxes of critical points proved off the curve
