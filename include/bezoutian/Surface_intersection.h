@@ -30,6 +30,7 @@
 #include <string>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace bezoutian {
@@ -449,6 +450,45 @@ inline double nearest_parameter(const Rational_bezier_curve_3<Rational>& C, cons
   return 0.5 * (a + b);
 }
 
+// The point (u, v) of a box side on D = 0 whose cause makes every point genuine (collapsed, shared_curve), with
+// its pair: the partner's iso-curve M gives one point exactly, the nearest point of the side's own iso-curve C the
+// other (for a collapsed C, its far end). Genuine and proved; the partner itself is floating point.
+inline Locus_point edge_line_point(const Edge_line_explanation& x, int side, const Surface_intersection_options& o,
+                                   const Rational_bezier_patch<Rational>& phi,
+                                   const Rational_bezier_patch<Rational>* psi, double u, double v) {
+  const Parameter_box& d = o.partner_domain;
+  const bool vertical = side_is_vertical(side);
+  const double c = vertical ? u : v, f = vertical ? v : u;
+  const double f0 = CGAL::to_double(vertical ? o.box.v0 : o.box.u0), f1 = CGAL::to_double(vertical ? o.box.v1 : o.box.u1);
+  const double tau = f1 > f0 ? (f - f0) / (f1 - f0) : 0;
+  const bool own_point = is_point_curve(x.own);
+  // the pair (P on C, Q on M): C is the side's own iso-curve over the partner domain, M the partner's at the
+  // fixed coordinate cp; for a collapsed C paired with itself (partner_side -1) Q is the sample's own point
+  const double o0 = CGAL::to_double(vertical ? d.v0 : d.u0), o1 = CGAL::to_double(vertical ? d.v1 : d.u1);
+  const double cp = x.partner_side < 0 ? c : CGAL::to_double(side_value(d, x.partner_side));
+  const double sigma = own_point ? (std::fabs(f - o0) > std::fabs(f - o1) ? 0.0 : 1.0)
+                                 : nearest_parameter(x.own, x.other.evaluate(tau));
+  const double g = o0 + sigma * (o1 - o0);  // the free coordinate of P on C
+  Locus_point q;
+  q.projection = {u, v};
+  q.lifted = true;
+  if (psi) {  // intersection: first (u, v) on phi, second (s, t) on psi
+    q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+    q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+    q.partner = {q.first[1], q.second[0]};
+    q.point_3d = phi.evaluate(q.first[0], q.first[1]);
+    q.residual = distance3(q.point_3d, psi->evaluate(q.second[0], q.second[1]));
+  } else {  // self-intersection: first (u, v + k), second (u + l, v)
+    q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+    q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+    q.partner = {q.second[0] - u, q.first[1] - v};
+    q.point_3d = phi.evaluate(q.second[0], q.second[1]);
+    q.residual = distance3(phi.evaluate(q.first[0], q.first[1]), q.point_3d);
+  }
+  q.genuine = q.status_proved = true;
+  return q;
+}
+
 // The box's sides on D = 0 (found by topology_is_affordable): their cause (internal/box_edge_lines.h) and sample
 // points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
 // exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
@@ -487,7 +527,6 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
     const int n = std::max(1, o.samples_per_arc);
     const double c = CGAL::to_double(e.value);
     const double f0 = CGAL::to_double(vertical ? b.v0 : b.u0), f1 = CGAL::to_double(vertical ? b.v1 : b.u1);
-    const bool own_point = e.genuine && is_point_curve(x.own);
     for (int i = 0; i <= n; ++i) {
       const double tau = double(i) / n, f = f0 + tau * (f1 - f0);
       const double u = vertical ? c : f, v = vertical ? f : c;
@@ -497,31 +536,45 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
         e.points.push_back(q);
         continue;
       }
-      // the pair (P on C, Q on M): C is the side's own iso-curve over the partner domain, M the partner's at the
-      // fixed coordinate cp; for a collapsed C paired with itself (partner_side -1) Q is the sample's own point
-      const double o0 = CGAL::to_double(vertical ? d.v0 : d.u0), o1 = CGAL::to_double(vertical ? d.v1 : d.u1);
-      const double cp = x.partner_side < 0 ? c : CGAL::to_double(side_value(d, x.partner_side));
-      const double sigma = own_point ? (std::fabs(f - o0) > std::fabs(f - o1) ? 0.0 : 1.0)
-                                     : nearest_parameter(x.own, x.other.evaluate(tau));
-      const double g = o0 + sigma * (o1 - o0);  // the free coordinate of P on C
-      Locus_point q;
-      q.projection = {u, v};
-      q.lifted = true;
-      if (psi) {  // intersection: first (u, v) on phi, second (s, t) on psi
-        q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
-        q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
-        q.partner = {q.first[1], q.second[0]};
-        q.point_3d = phi.evaluate(q.first[0], q.first[1]);
-        q.residual = distance3(q.point_3d, psi->evaluate(q.second[0], q.second[1]));
-      } else {  // self-intersection: first (u, v + k), second (u + l, v)
-        q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
-        q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
-        q.partner = {q.second[0] - u, q.first[1] - v};
-        q.point_3d = phi.evaluate(q.second[0], q.second[1]);
-        q.residual = distance3(phi.evaluate(q.first[0], q.first[1]), q.point_3d);
+      e.points.push_back(edge_line_point(x, e.side, o, phi, psi, u, v));
+    }
+  }
+}
+
+// The ends of the arcs that lie exactly on a box side on D = 0 whose cause is proved (a singular point of D where
+// the rest of D meets a seam or a collapsed edge, a boundary point there): the point lies on that side, so its
+// status is the side's, proved (genuine: a partner on the partner's iso-curve, which replaces the traced one,
+// since at a singular point the branches have different partners; phantom: the side's coordinate lies outside
+// the partner domain). The vertex enclosures are rationals rounded outward, so lo == hi == the side's value
+// holds only for a point exactly on the side.
+inline void mark_ends_on_edge_lines(Surface_locus& L, const Surface_intersection_options& o,
+                                    const Rational_bezier_patch<Rational>& phi,
+                                    const Rational_bezier_patch<Rational>* psi) {
+  for (const Locus_edge_line& e : L.edge_lines) {
+    if (!e.status_proved) continue;
+    const bool vertical = side_is_vertical(e.side);
+    std::optional<Edge_line_explanation> x;  // computed on first use (exact, a few curves)
+    for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+      auto& pts = L.arcs[k].points;
+      if (pts.empty()) continue;
+      const Curve_topology_edge& edge = L.topology.edges[k];
+      for (const std::size_t end : {edge.source, edge.target}) {
+        if (end >= L.topology.vertices.size()) continue;
+        const Curve_topology_vertex& w = L.topology.vertices[end];
+        const double lo = vertical ? w.u_lo : w.v_lo, hi = vertical ? w.u_hi : w.v_hi;
+        if (!(lo == hi && Rational(lo) == e.value)) continue;
+        Locus_point& q = end == edge.source ? pts.front() : pts.back();
+        if (!e.genuine) {
+          q.genuine = false;
+          q.status_proved = true;
+          continue;
+        }
+        if (!x) x = explain_edge_line(e.side, o.box, o.partner_domain, o.partner_domain_unbounded, phi, psi);
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        q = edge_line_point(*x, e.side, o, phi, psi, vertical ? CGAL::to_double(e.value) : q.projection[0],
+                            vertical ? q.projection[1] : CGAL::to_double(e.value));
+        q.partner_enclosure = {{{nan, nan}, {nan, nan}}};
       }
-      q.genuine = q.status_proved = true;
-      e.points.push_back(q);
     }
   }
 }
@@ -734,6 +787,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
+  internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
 
@@ -884,6 +938,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   return L;
 }
 

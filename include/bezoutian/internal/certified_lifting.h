@@ -609,9 +609,15 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
 /// (H being the only part of D = 0 in the box near c, and a 1-manifold up to p) runs along H; as t is monotone
 /// it covers the sub-arc of H from c to the last proved t. The span that reaches p is not attempted (there both
 /// branches meet). Sets the statuses of the points covered; returns the undecided fraction of the piece.
+/// Where the chain stops (a Jacobian too ill-conditioned for Krawczyk's test, as next to a seam where two patches
+/// of one smooth surface nearly coincide), the spans beyond it whose floating-point status is phantom are
+/// excluded instead: no point of the slab {t between t_j and t_j+1} of the cell has a partner in the domain
+/// (exclude_strips). That is a statement about every point of D = 0 in the slab, so it needs neither uniqueness
+/// nor monotonicity; H lies in the cell, so its points over those t are phantom.
 inline double certify_half_branch(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                   const Curve_topology_edge& e, const Curve_topology_piece& pc,
                                   const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
+                                  const std::vector<bool>& float_genuine, Exclusion_budget& budget,
                                   Edge_partner_certificate& out);
 
 /// Certifies the genuine / phantom status along an edge of a subdivision topology: for each graph piece, the
@@ -647,7 +653,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
                          std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
       total += len;
-      undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known, out);
+      undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known,
+                                                   float_genuine, budget, out);
       continue;
     }
     const int axis = pc.graph_axis;
@@ -869,6 +876,7 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
 inline double certify_half_branch(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                   const Curve_topology_edge& e, const Curve_topology_piece& pc,
                                   const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
+                                  const std::vector<bool>& float_genuine, Exclusion_budget& budget,
                                   Edge_partner_certificate& out) {
   using D = Double_interval;
   if (pc.singular_end < 0 || pc.last >= e.polyline.size()) return 1;
@@ -957,6 +965,18 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       }
     }
     covered = std::fabs(t_done - tc.mid());
+  }
+  // the exclusion fallback, span by span from where the chain stopped towards p (the span reaching p, where the
+  // point itself may be genuine, is not tried); the first span that fails ends it
+  for (std::size_t j = 0; j + 2 < m; ++j) {
+    const D a = t_at(j), b = t_at(j + 1);
+    const D T{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+    if ((dir > 0 ? T.hi : -T.lo) <= (dir > 0 ? t_done : -t_done)) continue;  // proved by the chain
+    if (float_genuine[idx[j]] || float_genuine[idx[j + 1]]) break;
+    if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) break;
+    for (std::size_t k : {j, j + 1})
+      if (out.point_status[idx[k]] == Partner_status::undecided) out.point_status[idx[k]] = Partner_status::phantom;
+    covered = std::max(covered, std::fabs((dir > 0 ? T.hi : T.lo) - tc.mid()));
   }
   return std::max(0.0, 1 - covered / full);
 }
