@@ -511,10 +511,12 @@ struct Edge_partner_certificate {
 /// four spans all fail is given up (hopeless runs would otherwise spend the budget of all others).
 /// Returns, for each span, whether its whole strip was covered by excluded boxes (closed boxes: a failed box
 /// that only touches a strip's edge leaves it proved, the edge lying in the excluded neighbour too).
+/// `descending`: the cover runs from high to low graph coordinate (a run whose hard end, e.g. a seam where two
+/// patches of one surface meet, is its low end is given up at once in the ascending order).
 inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Parameter_box& domain, int axis,
                                         const std::vector<Double_interval>& spans, const Parameter_box& cell,
                                         const std::vector<std::array<Double_interval, 2>>* start,
-                                        Exclusion_budget& budget) {
+                                        Exclusion_budget& budget, bool descending = false) {
   std::vector<bool> proved(spans.size(), false);
   const Rational &c0 = axis == 0 ? cell.v0 : cell.u0, &c1 = axis == 0 ? cell.v1 : cell.u1;
   const double range = CGAL::to_double(c1 - c0);
@@ -534,10 +536,12 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
       Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
     };
     std::vector<Piece> todo;  // a stack, processed from low to high graph coordinate (depth first)
-    for (int p = along; p-- > 0;)
+    for (int k = 0; k < along; ++k) {
+      const int p = descending ? k : along - 1 - k;
       for (int q = 0; q < across; ++q)
         todo.push_back({t0 + (t1 - t0) * p / along, p + 1 == along ? t1 : t0 + (t1 - t0) * (p + 1) / along,
                         c0 + (c1 - c0) * q / across, q + 1 == across ? c1 : c0 + (c1 - c0) * (q + 1) / across});
+    }
     // A box that is neither excluded nor split makes the spans it meets undecided ("lost"): those are the spans
     // meeting its graph range [s0, s1] with positive length (rounded outward: the box ends are rationals). A box
     // meeting lost spans only is not tested any more: near a genuine point (the strip of a span next to a split
@@ -563,9 +567,13 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
     while (!todo.empty()) {
       const Piece P = todo.back();
       todo.pop_back();
-      {  // the spans left of P are decided; a run whose first four decided spans are all lost is given up
+      {  // the spans before P are decided; a run whose first four decided spans are all lost is given up
         std::size_t won = 0, gone = 0;
-        for (std::size_t j = a; j < b && spans[j].hi <= CGAL::to_double(P.s0); ++j) (lost[j - a] ? gone : won) += 1;
+        if (descending) {
+          for (std::size_t j = b; j-- > a && spans[j].lo >= CGAL::to_double(P.s1);) (lost[j - a] ? gone : won) += 1;
+        } else {
+          for (std::size_t j = a; j < b && spans[j].hi <= CGAL::to_double(P.s0); ++j) (lost[j - a] ? gone : won) += 1;
+        }
         if (won == 0 && gone >= 4) {
           std::fill(lost.begin(), lost.end(), true);
           break;
@@ -584,8 +592,9 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
       }
       if (ws >= wo) {
         const Rational m = (P.s0 + P.s1) / 2;
-        todo.push_back({m, P.s1, P.o0, P.o1});
-        todo.push_back({P.s0, m, P.o0, P.o1});
+        const Piece low{P.s0, m, P.o0, P.o1}, high{m, P.s1, P.o0, P.o1};
+        todo.push_back(descending ? low : high);  // the near half is processed first
+        todo.push_back(descending ? high : low);
       } else {
         const Rational m = (P.o0 + P.o1) / 2;
         todo.push_back({P.s0, P.s1, P.o0, m});
@@ -837,7 +846,29 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       std::sort(strips.begin(), strips.end(), [](const Strip& x, const Strip& y) { return x.T.lo < y.T.lo; });
       std::vector<D> spans;
       for (const Strip& st : strips) spans.push_back(st.T);
-      const std::vector<bool> proved = exclude_strips(eq, domain, axis, spans, pc.cell, start(), budget);
+      std::vector<bool> proved = exclude_strips(eq, domain, axis, spans, pc.cell, start(), budget);
+      // the runs (touching spans) lost entirely in the ascending cover, again from the other end: a run given up
+      // at a hard low end (a run lost in its middle would only spend the budget again)
+      std::vector<D> again;
+      std::vector<std::size_t> where;
+      for (std::size_t j0 = 0, j1; j0 < strips.size(); j0 = j1) {
+        bool none = !proved[j0];
+        for (j1 = j0 + 1; j1 < strips.size() && spans[j1].lo <= spans[j1 - 1].hi; ++j1) none = none && !proved[j1];
+        if (none)
+          for (std::size_t j = j0; j < j1; ++j) again.push_back(spans[j]), where.push_back(j);
+      }
+      if (!again.empty() && budget.fallback_left > 0) {
+        // at most 256 tests (a long run lost for other reasons, e.g. genuine points at both ends, would spend
+        // the whole locus' budget: measured on teapot spout 18 x 19)
+        Exclusion_budget second_budget = budget;
+        second_budget.fallback_left = std::min<std::size_t>(budget.fallback_left, 256);
+        const std::vector<bool> second =
+            exclude_strips(eq, domain, axis, again, pc.cell, start(), second_budget, true);
+        budget.left = second_budget.left;
+        budget.fallback_left -= std::min<std::size_t>(budget.fallback_left, 256) - second_budget.fallback_left;
+        for (std::size_t r = 0; r < where.size(); ++r)
+          if (second[r]) proved[where[r]] = true;
+      }
       for (std::size_t j = 0; j < strips.size(); ++j) {
         if (!proved[j]) {
           undecided += strips[j].T.hi - strips[j].T.lo;
