@@ -535,7 +535,7 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
     struct Piece {
       Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
     };
-    std::vector<Piece> todo;  // a stack, processed from low to high graph coordinate (depth first)
+    std::vector<Piece> todo;  // a stack, processed from low to high graph coordinate (descending: high to low)
     for (int k = 0; k < along; ++k) {
       const int p = descending ? k : along - 1 - k;
       for (int q = 0; q < across; ++q)
