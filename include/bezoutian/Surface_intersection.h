@@ -558,12 +558,13 @@ inline void mark_ends_on_edge_lines(Surface_locus& L, const Surface_intersection
       auto& pts = L.arcs[k].points;
       if (pts.empty()) continue;
       const Curve_topology_edge& edge = L.topology.edges[k];
-      for (const std::size_t end : {edge.source, edge.target}) {
+      for (const bool last : {false, true}) {  // (by position: a loop's source and target may be one vertex)
+        const std::size_t end = last ? edge.target : edge.source;
         if (end >= L.topology.vertices.size()) continue;
         const Curve_topology_vertex& w = L.topology.vertices[end];
         const double lo = vertical ? w.u_lo : w.v_lo, hi = vertical ? w.u_hi : w.v_hi;
         if (!(lo == hi && Rational(lo) == e.value)) continue;
-        Locus_point& q = end == edge.source ? pts.front() : pts.back();
+        Locus_point& q = last ? pts.back() : pts.front();
         if (!e.genuine) {
           q.genuine = false;
           q.status_proved = true;
