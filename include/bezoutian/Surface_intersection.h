@@ -281,6 +281,14 @@ std::array<double, 2> search_if_unsolved(R residual, std::array<double, 2> x, co
   return size(alt) < size(x) ? alt : x;
 }
 
+// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
+// after polishing): a failed polish must not be reported as a double point.
+inline bool verified(const Locus_point& q) {
+  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
+                                     q.point_3d[2] * q.point_3d[2]);
+  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
+}
+
 // Lifts every traced point with `lift_point(u, v, guess)`: the kernel gives the partner at regular points;
 // at a singular vertex the kernel has dimension > 1 and each arc continues its own partner from its
 // neighbouring point (three branches through a triple point have three partners there).
@@ -298,6 +306,19 @@ void lift_arcs(Surface_locus& L, F lift_point) {
       arc.points[0] = lift_point(e.polyline[0][0], e.polyline[0][1], &arc.points[1].partner);
     if (n >= 2 && singular_ends[1] && arc.points[n - 2].lifted)
       arc.points[n - 1] = lift_point(e.polyline[n - 1][0], e.polyline[n - 1][1], &arc.points[n - 2].partner);
+    // Continuation: a point whose own lift does not solve the equations is lifted again from a neighbour's partner
+    // with a smaller residual, both ways along the arc, and keeps the better one. Next to a seam the kernel of B is
+    // nearly two-dimensional (the two patches nearly coincide there), its ratio can be far off (1e16 on teapot
+    // handle 12 x 13), and the grid seed covers the partner domain only.
+    auto residual_of = [](const Locus_point& q) { return std::isfinite(q.residual) ? q.residual : HUGE_VAL; };
+    auto relift = [&](std::size_t i, std::size_t from) {
+      if (verified(arc.points[i]) || !arc.points[from].lifted || !(residual_of(arc.points[from]) < residual_of(arc.points[i])))
+        return;
+      const Locus_point q = lift_point(e.polyline[i][0], e.polyline[i][1], &arc.points[from].partner);
+      if (residual_of(q) < residual_of(arc.points[i])) arc.points[i] = q;
+    };
+    for (std::size_t i = 1; i < n; ++i) relift(i, i - 1);
+    for (std::size_t i = n - 1; i-- > 0;) relift(i, i + 1);
     L.arcs.push_back(arc);
   }
 }
@@ -424,13 +445,6 @@ inline Surface_intersection_options with_partner_proofs(const Surface_intersecti
   return ow;
 }
 
-// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
-// after polishing): a failed polish must not be reported as a double point.
-inline bool verified(const Locus_point& q) {
-  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
-                                     q.point_3d[2] * q.point_3d[2]);
-  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
-}
 
 // The parameter in [0,1] of the point of C nearest to X (floating point: it only places a traced point).
 inline double nearest_parameter(const Rational_bezier_curve_3<Rational>& C, const std::array<double, 3>& X) {

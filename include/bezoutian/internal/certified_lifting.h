@@ -56,6 +56,8 @@ struct Exclusion_budget {
   /// Krawczyk tests of the blown-up equations near the trivial partner (blown_up_partner_equations.h); given up
   /// when the first 2000 all fail.
   std::size_t blown_up_left = 8000, blown_up_tried = 0, blown_up_proved = 0;
+  /// exclusion tests on the slabs of single points (the last resort of certify_edge_partners), per locus
+  std::size_t point_left = 4000;
   bool take_blown_up() {
     if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
     if (!take(blown_up_left)) return false;
@@ -895,8 +897,21 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         if (classify_partner_span(eq, domain, unbounded, axis, t, W, pc.cell, no_start, &y, true) ==
             Partner_status::genuine)
           merge(i, Partner_status::genuine, y);
-      } else if (!float_genuine[i] && kernel && !unbounded) {
-        if (kernel_proves_phantom(*kernel, domain, axis, t, o.mid(), pc.cell)) merge(i, Partner_status::phantom, none);
+      } else if (!float_genuine[i] && !unbounded) {
+        if (kernel && kernel_proves_phantom(*kernel, domain, axis, t, o.mid(), pc.cell)) {
+          merge(i, Partner_status::phantom, none);
+        } else if (budget.point_left > 0) {
+          // the slab {t} x (the cell's range of the other coordinate), which holds the exact arc point: at one
+          // value of t the exclusion need not beat the variation of the partner equations across a span (next to
+          // a seam, where two patches of one surface nearly coincide, that variation is as large as their gap),
+          // and it needs no real kernel vector (the kernel test fails where the partner is complex).
+          Exclusion_budget one = budget;
+          const std::size_t allowed = std::min<std::size_t>(32, budget.point_left);
+          one.fallback_left = allowed;
+          if (exclude_strips(eq, domain, axis, {t}, pc.cell, start(), one)[0]) merge(i, Partner_status::phantom, none);
+          budget.left = one.left;
+          budget.point_left -= std::max<std::size_t>(1, allowed - one.fallback_left);
+        }
       }
     }
   }
