@@ -34,12 +34,16 @@ bezoutian::Parameter_box parse_box(const std::string& text, const char* what) {
   return b;
 }
 
+// The patch `index` of the file (every object of the file is validated: a pole anywhere is an error); only the
+// warnings about that patch are printed (the teapot's lid and bottom warn about their collapsed rows).
 Patch patch_of(const std::string& path, std::size_t index) {
   Loaded_file f = load_and_validate(path);
-  for (const auto& w : f.warnings) std::cerr << "warning: " << w << "\n";
   if (f.doc.patches.size() <= index)
     throw bezoutian::Invalid_input(path + ": expected at least " + std::to_string(index + 1) + " patch(es), found " +
                                    std::to_string(f.doc.patches.size()));
+  const std::string label = object_label("patch", index, f.doc.patch_name(index)) + ": ";
+  for (const auto& w : f.warnings)
+    if (w.compare(0, label.size(), label) == 0) std::cerr << "warning: " << w << "\n";
   return f.doc.patches[index];
 }
 
