@@ -609,6 +609,25 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
   return proved;
 }
 
+/// Phantom proof at one traced point: the slab {t} x (the cell's range of the other coordinate), t the point's
+/// graph coordinate (a value, or the tiny enclosure of an end point), holds the exact arc point; exclude_strips on
+/// it, at most 32 tests, counted in budget.point_left. At one value of t the exclusion need not beat the variation
+/// of the partner equations across a span (next to a seam, where two patches of one surface nearly coincide, that
+/// variation is as large as their gap), and it needs no real kernel vector (the kernel test fails where the
+/// partner is complex).
+inline bool exclude_point_slab(const Partner_equations& eq, const Parameter_box& domain, int axis,
+                               const Double_interval& t, const Parameter_box& cell,
+                               const std::vector<std::array<Double_interval, 2>>* start, Exclusion_budget& budget) {
+  if (budget.point_left == 0) return false;
+  Exclusion_budget one = budget;
+  const std::size_t allowed = std::min<std::size_t>(32, budget.point_left);
+  one.fallback_left = allowed;
+  const bool proved = exclude_strips(eq, domain, axis, {t}, cell, start, one)[0];
+  budget.left = one.left;
+  budget.point_left -= std::max<std::size_t>(1, allowed - one.fallback_left);
+  return proved;
+}
+
 /// A half-branch H of D = 0 inside the box of a singular point p, from a crossing c of the box's edge to p
 /// (graph_axis -1: not a proved graph). Chained proof along the traced points from c: with t the coordinate
 /// along the line of c's edge's normal (u if c lies on a line u = const),
@@ -884,14 +903,16 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
     // tests that do not contract over a span often do at one value):
     //  - floating-point genuine: classify_partner_span on a small box around the floating-point (o, y);
     //  - floating-point phantom: the kernel of B (kernel_partner_proofs.h).
+    //  - floating-point phantom, where the kernel test fails: Krawczyk's test at t around the floating-point
+    //    (o, y) encloses the arc point in a tiny box, on which no partner may lie in the domain; else the slab of
+    //    the whole cell at t (below).
     for (std::size_t i = pc.first; i <= pc.last && i < n; ++i) {
       if (out.point_status[i] != Partner_status::undecided) continue;
       if (i < splits.size() && splits[i]) continue;  // (a split point's status is its own proof)
       const D t = coord(i, axis), o = coord(i, other);
+      auto around = [](const D& c) { return D{c.lo - 1e-9 * (1 + std::fabs(c.lo)), c.hi + 1e-9 * (1 + std::fabs(c.hi))}; };
+      const std::array<D, 3> W{around(o), around(D{partner[i][0], partner[i][0]}), around(D{partner[i][1], partner[i][1]})};
       if (float_genuine[i] && partner_known[i]) {
-        auto around = [](const D& c) { return D{c.lo - 1e-9 * (1 + std::fabs(c.lo)), c.hi + 1e-9 * (1 + std::fabs(c.hi))}; };
-        const std::array<D, 3> W{around(o), around(D{partner[i][0], partner[i][0]}),
-                                 around(D{partner[i][1], partner[i][1]})};
         std::array<D, 2> y;
         const auto no_start = []() -> const std::vector<std::array<D, 2>>* { return nullptr; };
         if (classify_partner_span(eq, domain, unbounded, axis, t, W, pc.cell, no_start, &y, true) ==
@@ -900,18 +921,19 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       } else if (!float_genuine[i] && !unbounded) {
         if (kernel && kernel_proves_phantom(*kernel, domain, axis, t, o.mid(), pc.cell)) {
           merge(i, Partner_status::phantom, none);
-        } else if (budget.point_left > 0) {
-          // the slab {t} x (the cell's range of the other coordinate), which holds the exact arc point: at one
-          // value of t the exclusion need not beat the variation of the partner equations across a span (next to
-          // a seam, where two patches of one surface nearly coincide, that variation is as large as their gap),
-          // and it needs no real kernel vector (the kernel test fails where the partner is complex).
-          Exclusion_budget one = budget;
-          const std::size_t allowed = std::min<std::size_t>(32, budget.point_left);
-          one.fallback_left = allowed;
-          if (exclude_strips(eq, domain, axis, {t}, pc.cell, start(), one)[0]) merge(i, Partner_status::phantom, none);
-          budget.left = one.left;
-          budget.point_left -= std::max<std::size_t>(1, allowed - one.fallback_left);
+          continue;
         }
+        if (partner_known[i] && budget.point_left > 0) {
+          Exclusion_budget one = budget;
+          one.left = 1;
+          --budget.point_left;
+          if (classify_partner_span(eq, domain, unbounded, axis, t, W, pc.cell, start, nullptr, false, nullptr, &one) ==
+              Partner_status::phantom) {
+            merge(i, Partner_status::phantom, none);
+            continue;
+          }
+        }
+        if (exclude_point_slab(eq, domain, axis, t, pc.cell, start(), budget)) merge(i, Partner_status::phantom, none);
       }
     }
   }
