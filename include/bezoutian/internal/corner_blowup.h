@@ -30,7 +30,8 @@
 // cones cover the quadrant).
 //
 // Coefficients are exact rationals (p rational) or enclosures with an exact zero pattern (p algebraic, on a side);
-// scaled by exact powers of two and converted outward to double intervals (CGAL::Interval_nt). The root counts
+// scaled by exact powers of two and converted outward to double intervals (CGAL::Interval_nt<false>: the tests set
+// the rounding mode upward once, around their loops, instead of once per operation). The root counts
 // split (0, oo) at z = 1, 2 or 1/2 (a root at the split moves it) and do not depend on the rectangle; the gradient
 // tests split their chart's region until every piece decides.
 #ifndef BEZOUTIAN_INTERNAL_CORNER_BLOWUP_H
@@ -89,7 +90,9 @@ class Corner_blowup {
   }
 
  private:
-  using IA = CGAL::Interval_nt<>;
+  // Unprotected intervals: every computation with them runs under a Protect_FPU_rounding guard (the conversions
+  // of the exact coefficients, CGAL::to_interval, happen before it).
+  using IA = CGAL::Interval_nt<false>;
   struct Term {
     int a, b;
     Rational lo, hi;  // the coefficient s_ab lies in [lo, hi]
@@ -158,9 +161,9 @@ class Corner_blowup {
   }
   static bool has_zero(const IA& x) { return x.inf() <= 0 && x.sup() >= 0; }
   static int sign(const IA& x) { return x.inf() > 0 ? 1 : (x.sup() < 0 ? -1 : 0); }
-  // [lo, hi] 2^shift as a double interval; false on overflow
-  static bool scaled(const Term& t, long shift, IA& out) {
-    const Rational f = two_power(shift);
+  // [lo, hi] factor 2^shift as a double interval (factor > 0), converted outward; false on overflow
+  static bool scaled(const Term& t, long shift, IA& out, int factor = 1) {
+    const Rational f = two_power(shift) * Rational(factor);
     const std::pair<double, double> l = CGAL::to_interval(t.lo * f), h = CGAL::to_interval(t.hi * f);
     if (!std::isfinite(l.first) || !std::isfinite(h.second)) return false;
     out = IA(l.first, h.second);
@@ -192,8 +195,10 @@ class Corner_blowup {
     for (const Term& t : edge.coefficients) E = std::max({E, exponent(t.lo), exponent(t.hi)});
     std::vector<IA> p(g + 1), dp(g + 1, IA(0));
     for (std::size_t j = 0; j <= g; ++j)
-      if (!scaled(edge.coefficients[reversed ? g - j : j], -E, p[j])) return -1;
-    for (std::size_t j = 1; j <= g; ++j) dp[j - 1] = p[j] * double(j);
+      if (!scaled(edge.coefficients[reversed ? g - j : j], -E, p[j]) ||
+          (j > 0 && !scaled(edge.coefficients[reversed ? g - j : j], -E, dp[j - 1], int(j))))
+        return -1;
+    CGAL::Protect_FPU_rounding<true> upward;
     auto eval = [](const std::vector<IA>& c, const IA& z) {
       IA r(0);
       for (std::size_t j = c.size(); j-- > 0;) r = r * z + c[j];
@@ -250,12 +255,13 @@ class Corner_blowup {
         // G_0 is divided by s (the axis y = 0), F_k by t (the axis x = 0)
         const long pp = p - (kind == 1 && i == 0 ? 1 : 0), qq = q - (kind == 0 && i + 2 == rays_.size() ? 1 : 0);
         IA c;
-        if (pp < 0 || qq < 0 || !scaled(t, pp * sigma + qq * tau - E, c)) return false;
-        (kind == 0 ? F : G).push_back(Scaled{int(pp), int(qq), c * double(factor)});
+        if (pp < 0 || qq < 0 || !scaled(t, pp * sigma + qq * tau - E, c, factor)) return false;
+        (kind == 0 ? F : G).push_back(Scaled{int(pp), int(qq), c});
         max_p = std::max(max_p, int(pp));
         max_q = std::max(max_q, int(qq));
       }
     }
+    CGAL::Protect_FPU_rounding<true> upward;
     std::vector<IA> ps(std::size_t(max_p + 1)), qs(std::size_t(max_q + 1));
     auto eval = [&](const std::vector<Scaled>& f) {
       IA r(0);

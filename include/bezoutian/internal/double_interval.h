@@ -11,6 +11,14 @@
 #include <cstring>
 #include <limits>
 
+// The operations below are small and on the hot path of every floating-point proof: they are forced inline (GCC
+// kept widen a call, 19 % of the samples of the teapot's certification; inlined, that run is 5-10 % faster).
+#if defined(__GNUC__)
+#define BEZOUTIAN_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define BEZOUTIAN_ALWAYS_INLINE inline
+#endif
+
 namespace bezoutian {
 namespace internal {
 
@@ -23,7 +31,7 @@ struct Double_interval {
     return {p.first, p.second};
   }
   static Double_interval hull(const Rational& a, const Rational& b) { return {of(a).lo, of(b).hi}; }
-  static Double_interval widen(double a, double b) {
+  BEZOUTIAN_ALWAYS_INLINE static Double_interval widen(double a, double b) {
     // one ulp outwards covers one rounding to nearest. An end rounded to +-inf on the inside (a lower end +inf,
     // an upper end -inf: an overflow) stands for a finite exact value beyond DBL_MAX: it becomes +-DBL_MAX, so
     // that the enclosure keeps the exact value (the old widen left +inf there).
@@ -32,7 +40,7 @@ struct Double_interval {
     return {a == HUGE_VAL ? M : next(a, false), b == -HUGE_VAL ? -M : next(b, true)};
   }
   // The neighbouring double towards +infinity (up) or -infinity (std::nextafter without the library call).
-  static double next(double x, bool up) {
+  BEZOUTIAN_ALWAYS_INLINE static double next(double x, bool up) {
     if (std::isinf(x)) return x;
     if (x == 0) return up ? std::numeric_limits<double>::denorm_min() : -std::numeric_limits<double>::denorm_min();
     std::uint64_t b;
@@ -44,13 +52,13 @@ struct Double_interval {
     std::memcpy(&x, &b, sizeof b);
     return x;
   }
-  friend Double_interval operator+(const Double_interval& x, const Double_interval& y) {
+  BEZOUTIAN_ALWAYS_INLINE friend Double_interval operator+(const Double_interval& x, const Double_interval& y) {
     return widen(x.lo + y.lo, x.hi + y.hi);
   }
-  friend Double_interval operator-(const Double_interval& x, const Double_interval& y) {
+  BEZOUTIAN_ALWAYS_INLINE friend Double_interval operator-(const Double_interval& x, const Double_interval& y) {
     return widen(x.lo - y.hi, x.hi - y.lo);
   }
-  friend Double_interval operator*(const Double_interval& x, const Double_interval& y) {
+  BEZOUTIAN_ALWAYS_INLINE friend Double_interval operator*(const Double_interval& x, const Double_interval& y) {
     const double a = x.lo * y.lo, b = x.lo * y.hi, c = x.hi * y.lo, d = x.hi * y.hi;
     if (std::isnan(a) || std::isnan(b) || std::isnan(c) || std::isnan(d)) return {-HUGE_VAL, HUGE_VAL};
     return widen(std::min(std::min(a, b), std::min(c, d)), std::max(std::max(a, b), std::max(c, d)));

@@ -12,8 +12,8 @@
 //
 // The coefficients c_ab are enclosed for every p of a small box K (a Taylor shift of the exact power form in MPFI:
 // interval operations are inclusion-monotone, so each interval holds the exact coefficient at the exact p), then
-// scaled by r^(t-k) and a common power of two and tested in double interval arithmetic (CGAL::Interval_nt, outward
-// rounding), the slope range split until every piece decides. Used by Curve_topology_by_subdivision.h.
+// scaled by r^(t-k) and a common power of two and tested in double interval arithmetic (CGAL::Interval_nt<false>,
+// outward rounding; the rounding mode is set upward once per test), the slope range split until every piece decides. Used by Curve_topology_by_subdivision.h.
 #ifndef BEZOUTIAN_INTERNAL_MULTIPLE_POINT_BLOWUP_H
 #define BEZOUTIAN_INTERNAL_MULTIPLE_POINT_BLOWUP_H
 
@@ -95,7 +95,7 @@ class Multiple_point_blowup {
   }
 
  private:
-  using IA = CGAL::Interval_nt<>;
+  using IA = CGAL::Interval_nt<false>;  // computed with only under a Protect_FPU_rounding guard
   Mpfi_interval& c(int i, int j) { return c_[std::size_t(i) * (b_ + 1) + j]; }
   const Mpfi_interval& c(int i, int j) const { return c_[std::size_t(i) * (b_ + 1) + j]; }
 
@@ -158,6 +158,7 @@ class Multiple_point_blowup {
   // real roots of H_k in the chart with |m| <= w: all simple (a sign change on a piece where the derivative keeps
   // a sign), none at m = -w, w; -1 if not proved
   int count_roots(int chart, double w) const {
+    CGAL::Protect_FPU_rounding<true> upward;
     if (sign(layer(chart, k_, 0, IA(-w))) == 0 || sign(layer(chart, k_, 0, IA(w))) == 0) return -1;
     std::vector<std::array<double, 2>> stack{{-w, w}};
     int roots = 0;
@@ -182,6 +183,7 @@ class Multiple_point_blowup {
 
   // G (see the header comment) has no zero for x in [-r, r] (X = x / r in [-1, 1]) and |m| <= w
   bool gradient_free(int chart, double w) const {
+    CGAL::Protect_FPU_rounding<true> upward;
     const int T = a_ + b_;
     const IA X(-1, 1);
     std::vector<std::array<double, 2>> stack{{-w, w}};
