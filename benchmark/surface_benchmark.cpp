@@ -1,10 +1,14 @@
 // End-to-end timings of the surface layer on seeded random patches (integer control points in [-5,5],
 // weights in [1,4] for rational ones): the implicit equation (Bezoutian matrix + determinant) and the
 // certified topology of D = 0 in [0,1]^2 (Bernstein subdivision; CGAL's arrangement of D and the box lines up to
-// total degree 16 where the subdivision does not certify) with lifting.
-// Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -Iinclude benchmark/surface_benchmark.cpp -lmpfi -lmpfr -lgmp
-// Run:   ./a.out [skip the topology above this total degree=200] [patches_per_case=3]
+// total degree 16 where the subdivision does not certify) with lifting. Side by side in the same run, up to total
+// degree cgal_degree (default 14; CGAL needs minutes from degree 20 on), CGAL's whole-plane curve analysis of the same
+// square-free D restricted to the box (analyse_curve_in_box: Arr_algebraic_segment_traits_2), and the ratio of its
+// time to ours (ours includes the lifting and the phantom exclusion, which CGAL's analysis does not do).
+// Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -frounding-math -Iinclude benchmark/surface_benchmark.cpp -lmpfi -lmpfr -lgmp
+// Run:   ./a.out [skip the topology above this total degree=200] [patches_per_case=3] [cgal_degree=14]
 #include "random_patches.h"
+#include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Surface_intersection.h>
 
 #include <chrono>
@@ -20,6 +24,7 @@ using Patch = Rational_bezier_patch<>;
 int main(int argc, char** argv) {
   const int max_degree = argc > 1 ? std::atoi(argv[1]) : 200;
   const int count = argc > 2 ? std::atoi(argv[2]) : 3;
+  const int cgal_degree = argc > 3 ? std::atoi(argv[3]) : 14;
   std::mt19937 g(20261122);
   std::cout << "case  kind  size  total_degree  implicit[s]  topology+lifting[s]  components  singular  "
                "[traced points whose genuine/phantom status is proved, genuine points]\n";
@@ -52,6 +57,14 @@ int main(int argc, char** argv) {
           if (self)
             std::cout << ", pinch points " << L.pinch_points.size() << (L.pinch_points_complete ? " (complete)" : " (incomplete)");
           std::cout << "] "
-                    << (L.topology_computed ? L.topology_method : std::string("NOT CERTIFIED: ") + L.note) << std::endl;
+                    << (L.topology_computed ? L.topology_method : std::string("NOT CERTIFIED: ") + L.note);
+          if (e.total_degree() <= cgal_degree) {
+            t0 = std::chrono::steady_clock::now();
+            const Curve_topology_in_box C = analyse_curve_in_box(e.square_free, Parameter_box{});
+            const double tc = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            std::cout << " | CGAL whole-plane analysis of D: " << tc << " s (" << tc / tt << " x ours), "
+                      << C.components.size() << " components, " << C.number_of_singular_points() << " singular";
+          }
+          std::cout << std::endl;
         }
 }
