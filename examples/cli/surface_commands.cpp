@@ -222,12 +222,12 @@ void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
     << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
   s << "<rect x='" << X(u0) << "' y='" << Y(v1) << "' width='" << X(u1) - X(u0) << "' height='" << Y(v0) - Y(v1)
     << "' fill='none' stroke='black'/>\n";
-  s << "<text x='" << pad << "' y='" << pad - 24 << "' font-size='11' font-family='sans-serif'>"
+  s << "<text x='" << pad << "' y='" << pad - 28 << "' font-size='11' font-family='sans-serif'>"
     << (L.self_intersection ? "self-intersection locus D(u,v)=0" : "intersection locus D(u,t)=0") << " in [" << u0
     << "," << u1 << "]x[" << v0 << "," << v1 << "]</text>\n";
-  s << "<text x='" << pad << "' y='" << pad - 13 << "' font-size='10' font-family='sans-serif'>dashed grey: phantom; "
+  s << "<text x='" << pad << "' y='" << pad - 17 << "' font-size='10' font-family='sans-serif'>dashed grey: phantom; "
     << "grey boxes: no genuine point; green diamond: a genuine part ends;</text>\n"
-    << "<text x='" << pad << "' y='" << pad - 3 << "' font-size='10' font-family='sans-serif'>orange triangle: pinch "
+    << "<text x='" << pad << "' y='" << pad - 6 << "' font-size='10' font-family='sans-serif'>orange triangle: pinch "
     << "point; blue square: boundary point; brown band: a side of the box on D=0</text>\n";
   for (const auto& b : L.topology.excluded_regions)  // proved free of genuine points: hatched grey
     s << "<rect x='" << X(CGAL::to_double(b.u0)) << "' y='" << Y(CGAL::to_double(b.v1)) << "' width='"
