@@ -447,7 +447,9 @@ std::pair<std::size_t, std::size_t> patch_indices(const std::string& text, bool 
 }
 
 void run_patch_intersect(const Intersect_options& o) {
-  const auto idx = patch_indices(o.patches, false);
+  // default: the first two patches of FILE_A, or the first patch of each file
+  const auto idx = o.patches.empty() && !o.file_b.empty() ? std::make_pair(std::size_t(0), std::size_t(0))
+                                                          : patch_indices(o.patches, false);
   Patch a = patch_of(o.file_a, idx.first);
   Patch b = o.file_b.empty() ? patch_of(o.file_a, idx.second) : patch_of(o.file_b, idx.second);
   run(false, a, &b, o, *patch_intersect_domain());
