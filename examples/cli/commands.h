@@ -33,6 +33,7 @@ struct Intersect_options {
   std::string svg, obj;             // patches: pictures
   double tolerance = 1e-9;          // patches: precision of traced ordinates
   int max_degree = 16;              // patches: largest total degree of D for CGAL's curve analysis
+  double fallback_seconds = 60;     // patches: time allowed to CGAL's curve analysis (0: no limit)
   std::string patches;              // patches: "I,J" indices (0-based) of the patches to use (default 0,1 / 0)
   bool json = false;
 };

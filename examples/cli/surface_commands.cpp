@@ -8,12 +8,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
+
+#if defined(__unix__)
+#include <csignal>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 namespace bezoutian_cli {
 namespace {
@@ -395,6 +404,126 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
   std::cout << "computed in " << seconds << " s\n";
 }
 
+void output(const bezoutian::Surface_locus& L, double s, const Patch& a, const Patch* b, const Intersect_options& o) {
+  if (o.json)
+    std::cout << to_json(L, s).dump(1) << "\n";
+  else
+    print_text(L, s);
+  if (!o.svg.empty()) write_svg(o.svg, L);
+  std::vector<const Patch*> ps = {&a};
+  if (b) ps.push_back(b);
+  if (!o.obj.empty()) write_obj(o.obj, ps, L);
+}
+
+void report(bool self, const Patch& a, const Patch* b, const Intersect_options& o,
+            const bezoutian::Surface_intersection_options& so) {
+  auto t0 = std::chrono::steady_clock::now();
+  bezoutian::Surface_locus L = self ? bezoutian::self_intersection_locus(a, so) : bezoutian::intersection_locus(a, *b, so);
+  output(L, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), a, b, o);
+}
+
+#if defined(__unix__)
+// CGAL's whole-plane analysis, the fallback where the subdivision does not certify, has no time bound (a patch with
+// huge coordinates ran for minutes, doc/surface_intersection.md). So the locus is first computed without it; only if
+// the fallback would run (the topology not certified, D of total degree <= --max-degree) is it computed again with
+// the fallback, in a child process whose standard output is kept. If the child has not finished after
+// o.fallback_seconds it is stopped, and the first result is reported, its note saying so. Returns false if the
+// child could not be started (the caller then computes in this process).
+bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Intersect_options& o,
+                            const bezoutian::Surface_intersection_options& so) {
+  bezoutian::Surface_intersection_options first = so;
+  first.max_total_degree_for_topology = 0;
+  auto t0 = std::chrono::steady_clock::now();
+  bezoutian::Surface_locus L =
+      self ? bezoutian::self_intersection_locus(a, first) : bezoutian::intersection_locus(a, *b, first);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (L.topology_computed) {
+    output(L, seconds, a, b, o);
+    return true;
+  }
+  // total degree of D without the box sides on it: the degree the library compares with the limit
+  const auto rest = bezoutian::internal::box_edge_lines(L.equation.square_free, so.box).rest;
+  int total = -1;
+  for (int j = 0; j <= rest.degree(); ++j)
+    if (!CGAL::is_zero(rest[j])) total = std::max(total, j + rest[j].degree());
+  if (total > o.max_degree) {
+    output(L, seconds, a, b, o);
+    return true;
+  }
+  int fd[2];
+  if (pipe(fd) != 0) return false;
+  std::cout.flush();
+  std::cerr.flush();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fd[0]);
+    close(fd[1]);
+    return false;
+  }
+  if (pid == 0) {  // the child: the whole report with the fallback, its standard output into the pipe
+    close(fd[0]);
+    dup2(fd[1], STDOUT_FILENO);
+    close(fd[1]);
+    int rc = 0;
+    try {
+      report(self, a, b, o, so);
+    } catch (const bezoutian::Error& e) {
+      std::cerr << "bezoutian: error: " << e.what() << "\n";
+      rc = 2;
+    } catch (const std::exception& e) {
+      std::cerr << "bezoutian: internal error: " << e.what() << "\n";
+      rc = 3;
+    }
+    std::cout.flush();
+    std::cerr.flush();
+    _exit(rc);
+  }
+  close(fd[1]);
+  std::string out;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(o.fallback_seconds);
+  bool finished = false;
+  for (;;) {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) break;
+    pollfd p{fd[0], POLLIN, 0};
+    const int r = poll(&p, 1, int(std::min(left * 1000 + 1, 1e9)));
+    if (r <= 0) continue;  // (a timeout or a signal: the loop ends at the deadline)
+    char buf[1 << 16];
+    const ssize_t n = read(fd[0], buf, sizeof buf);
+    if (n > 0) {
+      out.append(buf, std::size_t(n));
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    finished = true;  // end of file: the child has closed its output
+    break;
+  }
+  close(fd[0]);
+  if (!finished) kill(pid, SIGKILL);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (finished) {
+    std::cout << out << std::flush;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
+    if (WIFEXITED(status)) std::exit(WEXITSTATUS(status));  // the child has printed its error
+    throw std::runtime_error("the computation ended with signal " + std::to_string(WTERMSIG(status)));
+  }
+  std::ostringstream why;
+  why << "CGAL's whole-plane curve analysis (total degree " << total << " <= --max-degree " << o.max_degree
+      << ") was stopped after " << o.fallback_seconds << " s (--fallback-seconds)";
+  const std::string not_attempted = "CGAL's whole-plane curve analysis is not attempted above "
+                                    "max_total_degree_for_topology = 0";
+  const std::size_t at = L.note.find(not_attempted);
+  if (at != std::string::npos)
+    L.note.replace(at, not_attempted.size(), why.str());
+  else
+    L.note += "; " + why.str();
+  output(L, seconds, a, b, o);
+  return true;
+}
+#endif
+
 void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, const std::string& domain) {
   bezoutian::Surface_intersection_options so;
   so.box = parse_box(o.box, "--box");
@@ -404,17 +533,11 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
     so.partner_domain = parse_box(domain, "--domain");
   so.tolerance = o.tolerance;
   so.max_total_degree_for_topology = o.max_degree;
-  auto t0 = std::chrono::steady_clock::now();
-  bezoutian::Surface_locus L = self ? bezoutian::self_intersection_locus(a, so) : bezoutian::intersection_locus(a, *b, so);
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (o.json)
-    std::cout << to_json(L, s).dump(1) << "\n";
-  else
-    print_text(L, s);
-  if (!o.svg.empty()) write_svg(o.svg, L);
-  std::vector<const Patch*> ps = {&a};
-  if (b) ps.push_back(b);
-  if (!o.obj.empty()) write_obj(o.obj, ps, L);
+  if (!(o.fallback_seconds >= 0)) throw bezoutian::Invalid_input("--fallback-seconds must be >= 0 (0: no limit)");
+#if defined(__unix__)
+  if (o.max_degree > 0 && o.fallback_seconds > 0 && report_with_time_limit(self, a, b, o, so)) return;
+#endif
+  report(self, a, b, o, so);
 }
 
 } // namespace
@@ -469,6 +592,8 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
+  sub->add_option("--fallback-seconds", o->fallback_seconds,
+                  "stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: no limit)");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o, domain] {
     Patch p = patch_of(o->file_a, patch_indices(o->patches, true).first);
