@@ -6,7 +6,8 @@
 // square-free D restricted to the box (analyse_curve_in_box: Arr_algebraic_segment_traits_2), and the ratio of its
 // time to ours (ours includes the lifting and the phantom exclusion, which CGAL's analysis does not do).
 // Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -frounding-math -Iinclude benchmark/surface_benchmark.cpp -lmpfi -lmpfr -lgmp
-// Run:   ./a.out [skip the topology above this total degree=200] [patches_per_case=3] [cgal_degree=14]
+// Run:   ./a.out [skip the topology above this total degree=200] [patches_per_case=3] [cgal_degree=14] [lifting=1]
+// (lifting 0: the certified topology alone, without the proofs of the traced points' genuine/phantom status)
 #include "random_patches.h"
 #include <bezoutian/Curve_topology_in_box.h>
 #include <bezoutian/Surface_intersection.h>
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   const int max_degree = argc > 1 ? std::atoi(argv[1]) : 200;
   const int count = argc > 2 ? std::atoi(argv[2]) : 3;
   const int cgal_degree = argc > 3 ? std::atoi(argv[3]) : 14;
+  const bool lifting = argc > 4 ? std::atoi(argv[4]) != 0 : true;
   std::mt19937 g(20261122);
   std::cout << "case  kind  size  total_degree  implicit[s]  topology+lifting[s]  components  singular  "
                "[traced points whose genuine/phantom status is proved, genuine points]\n";
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
           t0 = std::chrono::steady_clock::now();
           Surface_intersection_options o;
           o.max_total_degree_for_topology = 16;  // CGAL's analysis only where it is practical
+          o.certify_lifting = lifting;
           Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
           const double tt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           std::size_t closed = 0, points = 0, proved = 0, genuine = 0;

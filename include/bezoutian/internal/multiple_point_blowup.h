@@ -13,7 +13,8 @@
 // The coefficients c_ab are enclosed for every p of a small box K (a Taylor shift of the exact power form in MPFI:
 // interval operations are inclusion-monotone, so each interval holds the exact coefficient at the exact p), then
 // scaled by r^(t-k) and a common power of two and tested in double interval arithmetic (CGAL::Interval_nt<false>,
-// outward rounding; the rounding mode is set upward once per test), the slope range split until every piece decides. Used by Curve_topology_by_subdivision.h.
+// outward rounding; the rounding mode is set upward once per test), the slope range split until every piece
+// decides. Used by Curve_topology_by_subdivision.h.
 #ifndef BEZOUTIAN_INTERNAL_MULTIPLE_POINT_BLOWUP_H
 #define BEZOUTIAN_INTERNAL_MULTIPLE_POINT_BLOWUP_H
 
@@ -95,7 +96,7 @@ class Multiple_point_blowup {
   }
 
  private:
-  using IA = CGAL::Interval_nt<false>;  // computed with only under a Protect_FPU_rounding guard
+  using IA = CGAL::Interval_nt<false>;  // arithmetic only under a Protect_FPU_rounding guard
   Mpfi_interval& c(int i, int j) { return c_[std::size_t(i) * (b_ + 1) + j]; }
   const Mpfi_interval& c(int i, int j) const { return c_[std::size_t(i) * (b_ + 1) + j]; }
 
