@@ -5,8 +5,8 @@
 //   curve_intersection_benchmark [N=10] [N_planar_7=10] [N_planar_12=2] [singular=0]
 // With singular=1, Singular's std (lexicographic, t > s) is timed on the same system (F1, F2, F3) for the first
 // problem of each 3-2 cell (column after '|'; -1 = not run / not installed).
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
 
 #include "singular_systems.h"
 

@@ -4,7 +4,7 @@
 // degree d through a constructed common point C(2/7) = Phi(3/5, 1/4); median and maximum wall time per problem.
 #include "random_patches.h"
 
-#include <bezoutian/Curve_surface_intersection.h>
+#include <bezoutian/intersection/Curve_surface_intersection.h>
 
 #include <algorithm>
 #include <chrono>

@@ -21,8 +21,8 @@
 //       benchmark/determinant_benchmark.cpp -o determinant_benchmark -lflint -lmpfi -lmpfr -lgmp
 // Run: ./determinant_benchmark [max_berkowitz_seconds=5]
 // Times are the minimum over several runs (the machine may be shared).
-#include <bezoutian/Polynomial_matrix_determinant.h>
-#include <bezoutian/Polynomial_normalization.h>
+#include <bezoutian/elimination/Polynomial_matrix_determinant.h>
+#include <bezoutian/algebraic/Polynomial_normalization.h>
 
 #include <flint/fmpz.h>
 #include <flint/fmpz_mpoly.h>

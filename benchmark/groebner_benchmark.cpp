@@ -9,11 +9,11 @@
 // fglm to lp, and std in lp; one Singular process per system and algorithm, killed after timeout_s ("  >tmo").
 // Our groebner strategy computes the basis of the pair (F1, F2) in both directions (R(s) and T(t)), certified, and
 // in space takes the gcd with the other pairs' resultants (Curve_intersection.h strategy_R).
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
 
 #include "singular_systems.h"
-#include <bezoutian/Groebner_bivariate.h>
+#include <bezoutian/elimination/Groebner_bivariate.h>
 
 #include <algorithm>
 #include <chrono>

@@ -15,7 +15,7 @@
 // Build: g++ -O2 -std=c++17 -DNDEBUG -DCGAL_USE_GMP -DCGAL_USE_MPFI -Iinclude benchmark/implicit_equation_benchmark.cpp -o implicit_equation_benchmark -lmpfi -lmpfr -lgmp
 // Run:   ./implicit_equation_benchmark [time_limit_s=60] [berkowitz_max_size=9] [cascade_max_size=9]
 #include "random_patches.h"
-#include <bezoutian/Implicit_equation.h>
+#include <bezoutian/elimination/Implicit_equation.h>
 
 #include <CGAL/Polynomial.h>
 #include <CGAL/Polynomial_traits_d.h>

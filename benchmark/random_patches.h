@@ -1,7 +1,7 @@
 // Seeded random patches shared by the benchmarks: integer control points in [-5,5], weights in [1,4].
 #ifndef BEZOUTIAN_BENCHMARK_RANDOM_PATCHES_H
 #define BEZOUTIAN_BENCHMARK_RANDOM_PATCHES_H
-#include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
 #include <random>
 #include <vector>
 

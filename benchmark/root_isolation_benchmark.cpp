@@ -10,8 +10,8 @@
 //       benchmark/root_isolation_benchmark.cpp -o root_isolation_benchmark -lmpfi -lmpfr -lgmp
 // Run: ./root_isolation_benchmark
 // Times are the minimum over several runs (the machine may be shared).
-#include <bezoutian/Algebraic_kernel_interop.h>
-#include <bezoutian/Root_isolation.h>
+#include <bezoutian/arrangement/Algebraic_kernel_interop.h>
+#include <bezoutian/algebraic/Root_isolation.h>
 
 #include <algorithm>
 #include <chrono>

@@ -3,8 +3,8 @@
 #ifndef BEZOUTIAN_BENCHMARK_SINGULAR_SYSTEMS_H
 #define BEZOUTIAN_BENCHMARK_SINGULAR_SYSTEMS_H
 
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
 
 #include <sstream>
 #include <string>

@@ -9,8 +9,8 @@
 // Run:   ./a.out [skip the topology above this total degree=200] [patches_per_case=3] [cgal_degree=14] [lifting=1]
 // (lifting 0: the certified topology alone, without the proofs of the traced points' genuine/phantom status)
 #include "random_patches.h"
-#include <bezoutian/Curve_topology_in_box.h>
-#include <bezoutian/Surface_intersection.h>
+#include <bezoutian/topology/Cgal_curve_analysis.h>
+#include <bezoutian/intersection/Surface_intersection.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
           t0 = std::chrono::steady_clock::now();
           Surface_intersection_options o;
           o.max_total_degree_for_topology = 16;  // CGAL's analysis only where it is practical
+          o.whole_plane_topology = Cgal_curve_analysis{};
           o.certify_lifting = lifting;
           Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
           const double tt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -3,7 +3,7 @@
 #define BEZOUTIAN_TEST_INTERSECTION_CHECKS_H
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/intersection/Curve_intersection.h>
 
 namespace bezoutian_test {
 

@@ -3,8 +3,8 @@
 #include "exact_json.h"
 #include "load.h"
 
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Error.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <nlohmann/json.hpp>

@@ -4,8 +4,8 @@
 #include "exact_json.h"
 #include "load.h"
 
-#include <bezoutian/Curve_surface_intersection.h>
-#include <bezoutian/Error.h>
+#include <bezoutian/intersection/Curve_surface_intersection.h>
+#include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <nlohmann/json.hpp>

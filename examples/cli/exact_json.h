@@ -3,7 +3,7 @@
 #ifndef BEZOUTIAN_CLI_EXACT_JSON_H
 #define BEZOUTIAN_CLI_EXACT_JSON_H
 
-#include <bezoutian/Algebraic_real.h>
+#include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <nlohmann/json.hpp>

@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "load.h"
 
-#include <bezoutian/Implicit_equation.h>
+#include <bezoutian/elimination/Implicit_equation.h>
 #include <bezoutian/io/Polynomial_expression.h>
 
 #include <nlohmann/json.hpp>

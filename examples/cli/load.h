@@ -2,8 +2,8 @@
 #ifndef BEZOUTIAN_CLI_LOAD_H
 #define BEZOUTIAN_CLI_LOAD_H
 
-#include <bezoutian/Degeneracy.h>
-#include <bezoutian/Weight_validity.h>
+#include <bezoutian/geometry/Degeneracy.h>
+#include <bezoutian/geometry/Weight_validity.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <string>

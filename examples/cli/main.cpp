@@ -1,7 +1,7 @@
 // bezoutian: command-line front end of the Bezoutian library.
 #include "commands.h"
 
-#include <bezoutian/Error.h>
+#include <bezoutian/arithmetic/Error.h>
 
 #include <iostream>
 

@@ -3,7 +3,8 @@
 #include "commands.h"
 #include "load.h"
 
-#include <bezoutian/Surface_intersection.h>
+#include <bezoutian/intersection/Surface_intersection.h>
+#include <bezoutian/topology/Cgal_curve_analysis.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <nlohmann/json.hpp>
@@ -533,6 +534,7 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
     so.partner_domain = parse_box(domain, "--domain");
   so.tolerance = o.tolerance;
   so.max_total_degree_for_topology = o.max_degree;
+  so.whole_plane_topology = bezoutian::Cgal_curve_analysis{};
   if (!(o.fallback_seconds >= 0)) throw bezoutian::Invalid_input("--fallback-seconds must be >= 0 (0: no limit)");
 #if defined(__unix__)
   if (o.max_degree > 0 && o.fallback_seconds > 0 && report_with_time_limit(self, a, b, o, so)) return;

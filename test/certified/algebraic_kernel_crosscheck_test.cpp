@@ -4,8 +4,8 @@
 // each number compared equal by CGAL's own Compare_1.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Algebraic_kernel_interop.h>
-#include <bezoutian/Root_isolation.h>
+#include <bezoutian/arrangement/Algebraic_kernel_interop.h>
+#include <bezoutian/algebraic/Root_isolation.h>
 
 #include <random>
 #include <string>

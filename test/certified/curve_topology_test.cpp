@@ -5,9 +5,9 @@
 
 #include "test_support.h"
 
-#include <bezoutian/Curve_topology_in_box.h>
-#include <bezoutian/Implicit_equation.h>
-#include <bezoutian/internal/matrix_zero_points.h>
+#include <bezoutian/topology/Cgal_curve_analysis.h>
+#include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/topology/matrix_zero_points.h>
 #include <bezoutian/io/Geometry_document.h>
 
 using namespace bezoutian;

@@ -5,7 +5,7 @@
 
 #include "test_support.h"
 
-#include <bezoutian/Surface_intersection.h>
+#include <bezoutian/intersection/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
 #include "power_patch.h"
 #include "../../benchmark/random_patches.h"

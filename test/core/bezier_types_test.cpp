@@ -3,8 +3,8 @@
 // blossom extrapolation), not from the code under test.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Rational_bezier_curve.h>
-#include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/geometry/Rational_bezier_curve.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
 
 #include <random>
 

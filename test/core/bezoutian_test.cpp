@@ -7,11 +7,11 @@
 // surfaces built to have a known (self-)intersection point.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Bezoutian.h>
-#include <bezoutian/Polynomial_matrix_determinant.h>
-#include <bezoutian/Polynomial_normalization.h>
-#include <bezoutian/Separated_variable_resultants.h>
-#include <bezoutian/Surface_bezoutian_matrices.h>
+#include <bezoutian/elimination/Bezoutian.h>
+#include <bezoutian/elimination/Polynomial_matrix_determinant.h>
+#include <bezoutian/algebraic/Polynomial_normalization.h>
+#include <bezoutian/elimination/Separated_variable_resultants.h>
+#include <bezoutian/elimination/Surface_bezoutian_matrices.h>
 
 #include <CGAL/Polynomial_traits_d.h>
 

@@ -8,10 +8,10 @@
 // examples (eq. 3.48, Examples 3.2.2, 3.2.4, 3.3.1), constructed common roots,
 // and classical identities (homogeneity, invariance under linear changes of
 // variables, restriction to a hyperplane).
-#include <bezoutian/Bezout_matrix.h>
-#include <bezoutian/Goldman_resolvent.h>
-#include <bezoutian/Macaulay_resultant.h>
-#include <bezoutian/Sylvester_resultant.h>
+#include <bezoutian/elimination/Bezout_matrix.h>
+#include <bezoutian/elimination/Goldman_resolvent.h>
+#include <bezoutian/elimination/Macaulay_resultant.h>
+#include <bezoutian/elimination/Sylvester_resultant.h>
 
 #include <catch2/catch.hpp>
 

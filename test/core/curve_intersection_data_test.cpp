@@ -6,7 +6,7 @@
 
 #include "test_support.h"
 
-#include <bezoutian/Curve_intersection.h>
+#include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <nlohmann/json.hpp>

@@ -4,8 +4,8 @@
 
 #include "intersection_checks.h"
 
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
 
 #include <CGAL/Polynomial_traits_d.h>
 

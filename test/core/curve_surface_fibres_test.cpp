@@ -9,7 +9,7 @@
 // resp. (oo, oo)), so their Dixon determinant vanishes identically and the implicit matrix cannot be used (a
 // documented limit of intersect_curve_patch, tested at the end). The factor (1 + s/4) and the term s v'^2 remove the
 // base points without changing the double curve / the singular point.
-#include <bezoutian/Curve_surface_intersection.h>
+#include <bezoutian/intersection/Curve_surface_intersection.h>
 
 #include <catch2/catch.hpp>
 #include <random>

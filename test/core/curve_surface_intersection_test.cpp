@@ -2,7 +2,7 @@
 // from outside the code: lines and curves constructed through known patch points P(u0,v0) at rational parameters,
 // the quadric z = xy (implicit equation; inverse u = x or u = 2x/(1+x), v = y),
 // iso-parameter curves of a patch, and exact evaluation of the reported triples.
-#include <bezoutian/Curve_surface_intersection.h>
+#include <bezoutian/intersection/Curve_surface_intersection.h>
 
 #include <catch2/catch.hpp>
 

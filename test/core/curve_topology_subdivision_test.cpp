@@ -3,9 +3,9 @@
 // corners); singular configurations must be reported as not certified, never guessed.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Curve_topology_by_subdivision.h>
-#include <bezoutian/internal/box_edge_lines.h>
-#include <bezoutian/internal/interval_krawczyk.h>
+#include <bezoutian/topology/Curve_topology_by_subdivision.h>
+#include <bezoutian/intersection/internal/box_edge_lines.h>
+#include <bezoutian/arithmetic/interval_krawczyk.h>
 
 using namespace bezoutian;
 using Q = Rational;

@@ -1,6 +1,6 @@
 // Degeneracy warnings (Degeneracy.h): the teapot's collapsed rows as listed in the external topology
 // file, and constructed cases whose degeneracy is checked independently (vanishing derivative, a pole).
-#include <bezoutian/Degeneracy.h>
+#include <bezoutian/geometry/Degeneracy.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <catch2/catch.hpp>

@@ -6,9 +6,9 @@
 // exact identities checked with CGAL's own division and gcd.
 #include "test_support.h"
 
-#include <bezoutian/Implicit_equation.h>
-#include <bezoutian/Polynomial_matrix_determinant.h>
-#include <bezoutian/Polynomial_normalization.h>
+#include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/elimination/Polynomial_matrix_determinant.h>
+#include <bezoutian/algebraic/Polynomial_normalization.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <CGAL/Polynomial/determinant.h>

@@ -1,9 +1,9 @@
 // The double-precision Bernstein grid of the subdivision (internal/double_bernstein_grid.h) claims a proved
 // radius: after any sequence of de Casteljau splits, every exact child coefficient lies in 2^e (m +- rho).
 // Checked against the same splits in exact rational arithmetic, on coefficients with a wide dynamic range.
-#include <bezoutian/internal/double_bernstein_grid.h>
-#include <bezoutian/internal/double_double_bernstein.h>
-#include <bezoutian/number_types.h>
+#include <bezoutian/topology/internal/double_bernstein_grid.h>
+#include <bezoutian/topology/internal/double_double_bernstein.h>
+#include <bezoutian/arithmetic/number_types.h>
 
 #include <catch2/catch.hpp>
 

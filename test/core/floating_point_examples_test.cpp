@@ -2,8 +2,8 @@
 // coefficients taken as exact decimals (examples/data/du1989_example_4_4_*.json). What is exactly true, decided
 // with CGAL's resultants and gcds (independent of the library's intersection engine) and cross-checked with
 // intersect_curves on pole-free pieces; see doc/floating_point_examples.md.
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Root_isolation.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/algebraic/Root_isolation.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <catch2/catch.hpp>

@@ -7,10 +7,10 @@
 
 #include "intersection_checks.h"
 
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
-#include <bezoutian/Groebner_bivariate.h>
-#include <bezoutian/internal/rational_reconstruction.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
+#include <bezoutian/elimination/Groebner_bivariate.h>
+#include <bezoutian/arithmetic/rational_reconstruction.h>
 
 #include <random>
 #include <vector>

@@ -5,8 +5,8 @@
 
 #include "test_support.h"
 
-#include <bezoutian/Implicit_equation.h>
-#include <bezoutian/internal/matrix_zero_points.h>
+#include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/topology/matrix_zero_points.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <random>

@@ -5,8 +5,8 @@
 // never find a partner inside the domain for a point of a region proved free of them.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/internal/certified_lifting.h>
-#include <bezoutian/internal/double_partner_witness.h>
+#include <bezoutian/lifting/certified_lifting.h>
+#include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/io/Geometry_document.h>
 #include "power_patch.h"
 

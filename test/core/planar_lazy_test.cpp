@@ -1,8 +1,8 @@
 // Planar default path of intersect_curves with lazy exact parameters (interval solver + Krawczyk boxes, exact on
 // demand): cross-checks against the exact strategies and the generator's known intersections.
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
-#include <bezoutian/Root_isolation.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
+#include <bezoutian/algebraic/Root_isolation.h>
 
 #include <catch2/catch.hpp>
 

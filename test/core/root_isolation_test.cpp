@@ -6,8 +6,8 @@
 // CGAL's Sturm-Habicht root count, and from published digits of sqrt(2).
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Algebraic_real.h>
-#include <bezoutian/Root_isolation.h>
+#include <bezoutian/algebraic/Algebraic_real.h>
+#include <bezoutian/algebraic/Root_isolation.h>
 
 #include <CGAL/Polynomial/sturm_habicht_sequence.h>
 

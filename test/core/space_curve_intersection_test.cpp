@@ -6,8 +6,8 @@
 
 #include "intersection_checks.h"
 
-#include <bezoutian/Curve_intersection.h>
-#include <bezoutian/Curve_problem_generator.h>
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/geometry/Curve_problem_generator.h>
 
 using namespace bezoutian;
 using Curve2 = Rational_bezier_curve_2<>;

@@ -3,8 +3,8 @@
 // wherever there is one; the second must hold where there is exactly one fold (D_x != 0 there), and fail otherwise.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/internal/fold_box.h>
-#include <bezoutian/internal/two_branch_box.h>
+#include <bezoutian/topology/internal/fold_box.h>
+#include <bezoutian/topology/internal/two_branch_box.h>
 
 #include <cmath>
 #include <vector>

@@ -3,7 +3,7 @@
 // by hand from the weight polynomials written below.
 #include <catch2/catch.hpp>
 
-#include <bezoutian/Weight_validity.h>
+#include <bezoutian/geometry/Weight_validity.h>
 
 using namespace bezoutian;
 using Q = Rational;

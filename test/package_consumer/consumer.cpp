@@ -1,5 +1,5 @@
 // Uses the installed headers: the unit circle quarter as a rational quadratic.
-#include <bezoutian/Rational_bezier_curve.h>
+#include <bezoutian/geometry/Rational_bezier_curve.h>
 #include <iostream>
 int main() {
   using Q = bezoutian::Rational;

@@ -8,7 +8,7 @@
 #ifndef BEZOUTIAN_IO_CGAL_DAT_FORMAT_H
 #define BEZOUTIAN_IO_CGAL_DAT_FORMAT_H
 
-#include <bezoutian/Error.h>
+#include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/io/Exact_number.h>
 #include <bezoutian/io/Text_tokens.h>
 

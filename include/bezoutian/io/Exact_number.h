@@ -6,8 +6,9 @@
 #ifndef BEZOUTIAN_IO_EXACT_NUMBER_H
 #define BEZOUTIAN_IO_EXACT_NUMBER_H
 
-#include <bezoutian/Error.h>
-#include <bezoutian/number_types.h>
+#include <bezoutian/arithmetic/Error.h>
+#include <bezoutian/arithmetic/exact_text.h>
+#include <bezoutian/arithmetic/number_types.h>
 
 #include <gmp.h>
 
@@ -195,61 +196,6 @@ inline Rational exact_number(const std::string& text) {
     throw Invalid_input("\"" + text.substr(0, 40) + (text.size() > 40 ? "..." : "") + "\" at offset " +
                         std::to_string(r.error_offset) + ": " + r.message);
   return r.value;
-}
-
-namespace internal {
-inline std::string mpz_to_string(const mpz_t z) {
-  std::string s(mpz_sizeinbase(z, 10) + 2, '\0');
-  mpz_get_str(&s[0], 10, z);
-  s.resize(std::char_traits<char>::length(s.c_str()));
-  return s;
-}
-} // namespace internal
-
-/// Exact text of q: "p" for an integer, else "p/q" in lowest terms (what parse_exact_number reads back).
-inline std::string to_exact_string(const Rational& q) {
-  std::string s = internal::mpz_to_string(mpq_numref(q.mpq()));
-  if (mpz_cmp_ui(mpq_denref(q.mpq()), 1) != 0) s += "/" + internal::mpz_to_string(mpq_denref(q.mpq()));
-  return s;
-}
-
-/// True if q has a finite decimal expansion (its reduced denominator is 2^a 5^b).
-inline bool has_finite_decimal_expansion(const Rational& q) {
-  Integer d(mpq_denref(q.mpq()));
-  mpz_tdiv_q_2exp(d.mpz(), d.mpz(), mpz_scan1(d.mpz(), 0));
-  while (mpz_divisible_ui_p(d.mpz(), 5)) mpz_divexact_ui(d.mpz(), d.mpz(), 5);
-  return mpz_cmp_ui(d.mpz(), 1) == 0;
-}
-
-/// Exact decimal text of q when it has a finite decimal expansion ("0.784", "-2.53125", "12"),
-/// otherwise the "p/q" text of to_exact_string (1/3 has no finite decimal expansion).
-inline std::string to_exact_decimal_string(const Rational& q) {
-  if (!has_finite_decimal_expansion(q)) return to_exact_string(q);
-  Integer num(mpq_numref(q.mpq())), den(mpq_denref(q.mpq()));
-  const unsigned long a = mpz_scan1(den.mpz(), 0);  // den = 2^a 5^b
-  unsigned long b = 0;
-  {
-    Integer d = den;
-    mpz_tdiv_q_2exp(d.mpz(), d.mpz(), a);
-    while (mpz_cmp_ui(d.mpz(), 1) != 0) {
-      mpz_divexact_ui(d.mpz(), d.mpz(), 5);
-      ++b;
-    }
-  }
-  const unsigned long k = a > b ? a : b;  // q = num * 2^(k-a) 5^(k-b) / 10^k
-  Integer scale;
-  mpz_ui_pow_ui(scale.mpz(), 2, k - a);
-  num = num * scale;
-  mpz_ui_pow_ui(scale.mpz(), 5, k - b);
-  num = num * scale;
-  const bool negative = mpz_sgn(num.mpz()) < 0;
-  mpz_abs(num.mpz(), num.mpz());
-  std::string digits = internal::mpz_to_string(num.mpz());
-  if (k > 0) {
-    if (digits.size() <= k) digits.insert(0, k + 1 - digits.size(), '0');
-    digits.insert(digits.size() - k, ".");
-  }
-  return negative ? "-" + digits : digits;
 }
 
 } // namespace io

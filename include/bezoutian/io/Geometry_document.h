@@ -6,9 +6,9 @@
 #ifndef BEZOUTIAN_IO_GEOMETRY_DOCUMENT_H
 #define BEZOUTIAN_IO_GEOMETRY_DOCUMENT_H
 
-#include <bezoutian/Rational_bezier_curve.h>
-#include <bezoutian/Rational_bezier_patch.h>
-#include <bezoutian/number_types.h>
+#include <bezoutian/geometry/Rational_bezier_curve.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
+#include <bezoutian/arithmetic/number_types.h>
 
 #include <cctype>
 #include <string>

@@ -17,13 +17,13 @@
 #ifndef BEZOUTIAN_IO_JSON_FORMAT_H
 #define BEZOUTIAN_IO_JSON_FORMAT_H
 
-#include <bezoutian/Error.h>
-#include <bezoutian/Rational_bezier_curve.h>
-#include <bezoutian/Rational_bezier_patch.h>
+#include <bezoutian/arithmetic/Error.h>
+#include <bezoutian/geometry/Rational_bezier_curve.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
 #include <bezoutian/io/Exact_number.h>
 #include <bezoutian/io/Polynomial_expression.h>
 #include <bezoutian/io/Text_tokens.h>
-#include <bezoutian/number_types.h>
+#include <bezoutian/arithmetic/number_types.h>
 
 #include <nlohmann/json.hpp>
 

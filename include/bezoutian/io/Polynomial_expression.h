@@ -14,9 +14,9 @@
 #ifndef BEZOUTIAN_IO_POLYNOMIAL_EXPRESSION_H
 #define BEZOUTIAN_IO_POLYNOMIAL_EXPRESSION_H
 
-#include <bezoutian/Error.h>
+#include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/io/Exact_number.h>
-#include <bezoutian/number_types.h>
+#include <bezoutian/arithmetic/number_types.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -49,9 +49,6 @@ struct Expression_limits {
   int max_depth = 200;       ///< deepest nesting of parentheses / unary signs
   long max_constant_power_bits = 10000000;  ///< largest size of a constant power such as 7^1000
 };
-
-/// Sparse polynomial in k variables: exponent vector (one entry per variable) -> nonzero coefficient.
-using Sparse_polynomial = std::map<std::vector<int>, Rational>;
 
 namespace internal {
 
@@ -323,63 +320,6 @@ inline Polynomial_2<Rational> parse_polynomial_2(const std::string& text, const 
   std::vector<Polynomial_1<Rational>> outer;
   for (const auto& row : c) outer.emplace_back(row.begin(), row.end());
   return Polynomial_2<Rational>(outer.begin(), outer.end());
-}
-
-namespace internal {
-// "c*u^a*v^b" terms, highest total degree first; exact "p/q" coefficients that the parser reads back.
-inline std::string sparse_to_string(const Sparse_polynomial& p, const std::vector<std::string>& vars) {
-  if (p.empty()) return "0";
-  std::vector<std::pair<std::vector<int>, Rational>> terms(p.begin(), p.end());
-  std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) {
-    int da = 0, db = 0;
-    for (int e : a.first) da += e;
-    for (int e : b.first) db += e;
-    if (da != db) return da > db;
-    return a.first > b.first;
-  });
-  std::string out;
-  for (std::size_t i = 0; i < terms.size(); ++i) {
-    Rational c = terms[i].second;
-    const bool negative = CGAL::is_negative(c);
-    if (negative) c = -c;
-    out += i == 0 ? (negative ? "-" : "") : (negative ? " - " : " + ");
-    std::string monomial;
-    for (std::size_t k = 0; k < vars.size(); ++k) {
-      const int e = terms[i].first[k];
-      if (e == 0) continue;
-      if (!monomial.empty()) monomial += "*";
-      monomial += vars[k];
-      if (e > 1) monomial += "^" + std::to_string(e);
-    }
-    if (monomial.empty())
-      out += to_exact_string(c);
-    else if (c == Rational(1))
-      out += monomial;
-    else
-      out += to_exact_string(c) + "*" + monomial;
-  }
-  return out;
-}
-} // namespace internal
-
-/// Exact text of a univariate polynomial in `variable`, e.g. "3/4*t^2 - t + 1" (read back by parse_polynomial_1).
-inline std::string polynomial_to_string(const Polynomial_1<Rational>& p, const std::string& variable) {
-  Sparse_polynomial s;
-  if (!CGAL::is_zero(p))
-    for (int i = 0; i <= p.degree(); ++i)
-      if (!CGAL::is_zero(p[i])) s[{i}] = p[i];
-  return internal::sparse_to_string(s, {variable});
-}
-
-/// Exact text of a bivariate polynomial with inner variable u and outer variable v.
-inline std::string polynomial_to_string(const Polynomial_2<Rational>& p, const std::string& u, const std::string& v) {
-  Sparse_polynomial s;
-  if (!CGAL::is_zero(p))
-    for (int b = 0; b <= p.degree(); ++b)
-      if (!CGAL::is_zero(p[b]))
-        for (int a = 0; a <= p[b].degree(); ++a)
-          if (!CGAL::is_zero(p[b][a])) s[{a, b}] = p[b][a];
-  return internal::sparse_to_string(s, {u, v});
 }
 
 } // namespace io

@@ -2,7 +2,7 @@
 #ifndef BEZOUTIAN_IO_TEXT_TOKENS_H
 #define BEZOUTIAN_IO_TEXT_TOKENS_H
 
-#include <bezoutian/Error.h>
+#include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include <algorithm>

@@ -1,0 +1,976 @@
+// Self-intersection locus of a rational Bezier patch and intersection curve of two patches:
+// the implicit equation D of the projected locus (buse-elkadi-galligo-2008 Theorems 2-5), its certified
+// topology in a parameter box (topology/Curve_topology_by_subdivision.h, and optionally CGAL's curve analysis,
+// topology/Cgal_curve_analysis.h), and the lifting of every traced point to its
+// partner parameters through the kernel of the Bezoutian matrix (§4: U is in the kernel of B^t, so the
+// partner is a ratio of kernel entries).
+//
+// What is certified: D exactly; the components of D = 0 in the box, its singular points with their branch
+// counts and its boundary points. The lifting of sample points to the partner parameters is computed in
+// floating point (verified by the residual |Phi - Psi| at each point); the genuine / phantom status along the arcs
+// of a subdivision topology is then proved where possible (internal/certified_lifting.h: a partner enclosed in
+// the partner domain by a parametric Krawczyk test, or every partner excluded), and each traced point says whether
+// its status is proved (Locus_point::status_proved, Locus_arc::undecided_fraction).
+#ifndef BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
+#define BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
+
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/topology/Curve_topology_by_subdivision.h>
+#include <bezoutian/intersection/internal/box_edge_lines.h>
+#include <bezoutian/lifting/certified_lifting.h>
+#include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/floating_null_vector.h>
+#include <bezoutian/topology/matrix_zero_points.h>
+#include <bezoutian/lifting/partner_domain_crossings.h>
+#include <bezoutian/lifting/pinch_points.h>
+#include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace bezoutian {
+
+/// Options of the surface (self-)intersection computations.
+struct Surface_intersection_options {
+  /// Region of the projection plane ((u,v) for self-intersection, (u,t) for intersection) that is analysed.
+  Parameter_box box;
+  /// Domain of the partner parameters (the patches' parameter domain); `partner_domain_unbounded` ignores it.
+  Parameter_box partner_domain;
+  bool partner_domain_unbounded = false;
+  /// Certified sample points per arc of D = 0 and the precision of their ordinates.
+  int samples_per_arc = 24;
+  double tolerance = 1e-9;
+  Bezoutian_formula formula = Bezoutian_formula::automatic;
+  /// The certified topology is first computed by Bernstein subdivision in the box (any degree,
+  /// Curve_topology_by_subdivision.h). Where that does not certify, the whole-plane topology policy below is
+  /// tried, whose cost explodes with the degree: above this total degree of D it is not attempted
+  /// (Surface_locus::topology_computed == false) instead of running for hours. See doc/surface_intersection.md
+  /// for measured times.
+  int max_total_degree_for_topology = 16;
+  /// Whole-plane topology of D = 0 in the box, tried where the subdivision does not certify: an opt-in policy,
+  /// empty by default. `Cgal_curve_analysis` (topology/Cgal_curve_analysis.h) is CGAL's exact curve analysis;
+  /// it brings CGAL's algebraic kernel into the translation unit and is not bounded in time.
+  std::function<Curve_topology_in_box(const Polynomial_2<Integer>& D, const Parameter_box& box, double tolerance,
+                                      int samples_per_arc)>
+      whole_plane_topology;
+  /// Limits of the subdivision.
+  Subdivision_topology_options subdivision;
+  /// Prove the genuine / phantom status along the arcs (internal/certified_lifting.h; subdivision topologies
+  /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
+  bool certify_lifting = true;
+  /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus, and as
+  /// many again for the fallback on spans without a followed partner (internal/certified_lifting.h); the spans
+  /// left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
+  /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
+  std::size_t lifting_exclusion_budget = 5000;
+  /// Self-intersection: search the pinch points of the patch in the box (internal/pinch_points.h), with at most
+  /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
+  std::size_t pinch_point_boxes = 600000;
+};
+
+/// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
+struct Locus_point {
+  std::array<double, 2> projection{};  ///< (u,v) (self) or (u,t) (intersection)
+  std::array<double, 2> partner{};     ///< (k,l) offsets turned into parameters: see Surface_locus
+  std::array<double, 2> first{}, second{};  ///< the two parameter points that map to the same 3D point
+  std::array<double, 3> point_3d{};
+  double residual = std::numeric_limits<double>::quiet_NaN();  ///< |Phi(first) - Phi/Psi(second)|
+  bool lifted = false;   ///< the kernel gave a partner
+  /// partner inside its domain, distinct from the point itself, and verified: residual <= 1e-7 (1 + |point_3d|)
+  bool genuine = false;
+  /// `genuine` is proved for the point of D = 0 that this traced point approximates: genuine by a partner enclosed
+  /// in the partner domain (parametric Krawczyk), phantom by an exclusion of every partner
+  /// (internal/certified_lifting.h). False: decided in floating point only.
+  bool status_proved = false;
+  /// For a point proved genuine: a box {{y1_lo, y1_hi}, {y2_lo, y2_hi}} in the coordinates of `partner` ((l, k) or
+  /// (v, s)) proved to contain a partner, inside the partner domain, of the exact point of D = 0 that this traced
+  /// point approximates (the point of the exact arc with the same graph coordinate; parametric Krawczyk over the
+  /// span, internal/certified_lifting.h). NaN otherwise. `partner` itself is a floating-point approximation.
+  std::array<std::array<double, 2>, 2> partner_enclosure{
+      {{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()},
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}}};
+};
+
+/// One arc of D = 0 inside the box, traced.
+struct Locus_arc {
+  std::size_t source = 0, target = 0;  ///< vertices of the certified topology
+  std::vector<Locus_point> points;
+  /// Share of the arc (by length of its graph coordinate) whose genuine / phantom status is not proved: 0 when
+  /// every point of the exact arc, not only the traced ones, is proved genuine or phantom; 1 if nothing is.
+  double undecided_fraction = 1;
+};
+
+/// Two patches in contact along their boundaries (the teapot's patches are glued edge to edge): a piece of a
+/// boundary curve of the first patch lying on a boundary curve of the second (`shared_curve`), or an isolated
+/// common boundary point (touching corners, a boundary crossing). Decided exactly with the curve engine
+/// (intersect_curves on the boundary curves); parameters run along the boundary curves.
+struct Boundary_contact {
+  int side_first = 0, side_second = 0;  ///< boundary_curve sides: 0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0
+  bool shared_curve = false;            ///< infinitely many common points (a common piece of boundary curve)
+  Algebraic_real first_0, first_1;      ///< parameter range on the first patch's boundary curve (equal for a point)
+  Algebraic_real second_0, second_1;    ///< the corresponding range on the second patch's boundary curve
+  std::array<double, 3> point{};        ///< the contact point (the start of a shared piece)
+};
+
+/// A point inside the box where the genuine part of an arc ends: a partner reaches the boundary of the partner
+/// domain there (the intersection curve meets a boundary curve of the second patch; a double curve of a
+/// self-intersection leaves the patch through its other sheet). Certified (internal/partner_domain_crossings.h):
+/// `box` holds exactly one solution (x1, x2, y1, y2) of the partner equations together with
+/// `boundary coordinate = bound`, a transversal crossing, and that solution is the point of the arc over its graph
+/// coordinate. Its traced point arc.points[index] is genuine (status proved; the partner lies on the domain's
+/// boundary, the other coordinates inside), and the floating-point statuses on its two sides differ.
+struct Locus_split_point {
+  std::size_t arc = 0;    ///< index into Surface_locus::arcs
+  std::size_t index = 0;  ///< the traced point arcs[arc].points[index]
+  int point = 0;          ///< the parameter point on the boundary: 0 Locus_point::first, 1 Locus_point::second
+  int coordinate = 0;     ///< its coordinate on the boundary: 0 (u or s), 1 (v or t)
+  Rational bound;         ///< the boundary value of that coordinate
+  /// {x1, x2, y1, y2}: the projection (u, v or u, t) and the partner ((l, k) or (v, s)), each {lo, hi}
+  std::array<std::array<double, 2>, 4> box{};
+};
+
+/// A side of the box on which D vanishes identically: every point of it is a point of the projected locus. Its
+/// line's factor is removed from D before the topology, which describes the rest of D = 0 (whose boundary points
+/// on this side are where the rest meets it). The cause is decided exactly (internal/box_edge_lines.h): a collapsed
+/// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
+/// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
+/// the seam of a closed patch), both genuine at every point; or the side's fixed coordinate lies outside the
+/// partner domain (phantom at every point).
+struct Locus_edge_line {
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
+  int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
+  Rational value;  ///< the fixed coordinate of the side
+  Cause cause = unexplained;
+  /// collapsed / shared_curve: the side of the partner domain (boundary_curve order) whose iso-curve holds the
+  /// partner points; -1 for a self-intersection's collapsed side paired with itself
+  int partner_side = -1;
+  bool genuine = false;        ///< every point of the side has a partner in the partner domain (collapsed, shared_curve)
+  bool status_proved = false;  ///< `genuine` is proved for the whole side (every cause but unexplained)
+  std::string description;     ///< one line for people
+  /// samples along the side (samples_per_arc + 1, ends included): for a proved cause the partner comes from it (a
+  /// floating-point point of the partner iso-curve; status_proved set, partner_enclosure NaN); otherwise the lifting
+  /// of the arcs (floating point).
+  std::vector<Locus_point> points;
+};
+
+/// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
+struct Surface_locus {
+  bool self_intersection = true;
+  Implicit_equation equation;
+  Curve_topology_in_box topology;
+  std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
+  bool topology_computed = false;
+  /// "subdivision" (Bernstein subdivision in the box) or "curve analysis" (CGAL's arrangement), if computed
+  std::string topology_method;
+  std::string note;  ///< why the topology was not computed, if it was not
+  /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
+  std::vector<Boundary_contact> contacts;
+  /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
+  std::vector<Locus_edge_line> edge_lines;
+  /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
+  /// is also a traced point of its arc.
+  std::vector<Locus_split_point> split_points;
+  /// Self-intersection: the pinch points of the patch in the box (rank-1 Jacobian: the double curve ends there,
+  /// its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
+  /// says whether every other point of the box is proved not to be one (else `pinch_points_note` says why not).
+  std::vector<Pinch_point> pinch_points;
+  bool pinch_points_complete = false;
+  std::string pinch_points_note;
+};
+
+namespace internal {
+
+// Floating-point evaluation of a rational bivariate polynomial (inner variable x, outer y).
+inline double evaluate_double(const Polynomial_2<Rational>& p, double x, double y) {
+  double r = 0;
+  for (int j = p.degree(); j >= 0; --j) {
+    double c = 0;
+    for (int i = p[j].degree(); i >= 0; --i) c = c * x + CGAL::to_double(p[j][i]);
+    r = r * y + c;
+  }
+  return r;
+}
+
+// Ratio x^(i+1,j) / x^(i,j) (direction 0) or x^(i,j+1) / x^(i,j) (direction 1) of a kernel vector indexed
+// by monomials, using the pair with the largest denominator for stability.
+inline bool monomial_ratio(const std::vector<std::pair<int, int>>& mono, const std::vector<long double>& x,
+                           int direction, long double& out) {
+  long double best = 0;
+  bool found = false;
+  for (std::size_t a = 0; a < mono.size(); ++a)
+    for (std::size_t b = 0; b < mono.size(); ++b) {
+      const bool next = direction == 0 ? (mono[b].first == mono[a].first + 1 && mono[b].second == mono[a].second)
+                                       : (mono[b].second == mono[a].second + 1 && mono[b].first == mono[a].first);
+      if (next && std::fabs(x[a]) > best) best = std::fabs(x[a]), out = x[b] / x[a], found = true;
+    }
+  return found;
+}
+
+inline bool inside(const Parameter_box& d, const std::array<double, 2>& p, double slack = 1e-9) {
+  return CGAL::to_double(d.u0) - slack <= p[0] && p[0] <= CGAL::to_double(d.u1) + slack &&
+         CGAL::to_double(d.v0) - slack <= p[1] && p[1] <= CGAL::to_double(d.v1) + slack;
+}
+
+// Gauss-Newton polishing of the partner parameters (a, b) of a traced point: minimizes |r(a,b)| with
+// r : R^2 -> R^3 (three coordinate equations, two unknowns); the Jacobian by central differences.
+template <class R>
+std::array<double, 2> polish_partner(R r, std::array<double, 2> x, int iterations = 16) {
+  auto norm = [](const std::array<double, 3>& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+  std::array<double, 3> f = r(x[0], x[1]);
+  for (int it = 0; it < iterations; ++it) {
+    const double h = 1e-7;
+    std::array<std::array<double, 3>, 2> J;
+    for (int c = 0; c < 2; ++c) {
+      std::array<double, 2> p = x, m = x;
+      p[c] += h, m[c] -= h;
+      auto fp = r(p[0], p[1]), fm = r(m[0], m[1]);
+      for (int k = 0; k < 3; ++k) J[c][k] = (fp[k] - fm[k]) / (2 * h);
+    }
+    // normal equations J^T J d = -J^T f
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    for (int k = 0; k < 3; ++k) {
+      a11 += J[0][k] * J[0][k], a12 += J[0][k] * J[1][k], a22 += J[1][k] * J[1][k];
+      b1 -= J[0][k] * f[k], b2 -= J[1][k] * f[k];
+    }
+    const double det = a11 * a22 - a12 * a12;
+    if (!(std::fabs(det) > 0)) break;
+    // damped step: halve it until the residual decreases (a full Gauss-Newton step overshoots far from the root)
+    const std::array<double, 2> d = {(b1 * a22 - b2 * a12) / det, (a11 * b2 - a12 * b1) / det};
+    bool improved = false;
+    for (double lambda = 1; lambda > 1e-3 && !improved; lambda *= 0.5) {
+      const std::array<double, 2> y = {x[0] + lambda * d[0], x[1] + lambda * d[1]};
+      const auto fy = r(y[0], y[1]);
+      if (norm(fy) < norm(f)) x = y, f = fy, improved = true;
+    }
+    if (!improved) break;
+  }
+  return x;
+}
+
+// When the kernel does not determine the partner (a ratio 0/0, e.g. k = 0 on a pinch curve), the best
+// point of a grid over `range` (excluding the trivial partner (0,0)) seeds the polishing.
+template <class R>
+std::array<double, 2> grid_seed(R r, const std::array<double, 4>& range) {
+  std::array<double, 2> best{std::numeric_limits<double>::quiet_NaN(), 0};
+  double bv = std::numeric_limits<double>::infinity();
+  const int N = 40;
+  for (int i = 0; i <= N; ++i)
+    for (int j = 0; j <= N; ++j) {
+      const double a = range[0] + (range[1] - range[0]) * i / N, b = range[2] + (range[3] - range[2]) * j / N;
+      if (std::fabs(a) + std::fabs(b) < 1e-3) continue;
+      auto f = r(a, b);
+      const double v = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+      if (v < bv) bv = v, best = {a, b};
+    }
+  return best;
+}
+
+// A polished partner that does not solve the equations (the kernel can point to a wrong partner where it has
+// dimension > 1) is replaced by the best polished grid seed over the partner range, if that is better.
+template <class R>
+std::array<double, 2> search_if_unsolved(R residual, std::array<double, 2> x, const std::array<double, 4>& range,
+                                         bool exclude_trivial) {
+  auto size = [&](const std::array<double, 2>& y) {
+    const auto f = residual(y[0], y[1]);
+    return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+  };
+  if (size(x) <= 1e-9) return x;
+  const auto seed = grid_seed(residual, range);
+  if (!std::isfinite(seed[0])) return x;
+  const auto alt = polish_partner(residual, seed);
+  if (exclude_trivial && std::fabs(alt[0]) + std::fabs(alt[1]) <= 1e-9) return x;
+  return size(alt) < size(x) ? alt : x;
+}
+
+// A lifted point counts only if its two preimages really map to the same 3D point (floating-point check
+// after polishing): a failed polish must not be reported as a double point.
+inline bool verified(const Locus_point& q) {
+  const double scale = 1 + std::sqrt(q.point_3d[0] * q.point_3d[0] + q.point_3d[1] * q.point_3d[1] +
+                                     q.point_3d[2] * q.point_3d[2]);
+  return q.lifted && std::isfinite(q.residual) && q.residual <= 1e-7 * scale;
+}
+
+// Lifts every traced point with `lift_point(u, v, guess)`: the kernel gives the partner at regular points;
+// at a singular vertex the kernel has dimension > 1 and each arc continues its own partner from its
+// neighbouring point (three branches through a triple point have three partners there).
+template <class F>
+void lift_arcs(Surface_locus& L, F lift_point) {
+  for (const auto& e : L.topology.edges) {
+    Locus_arc arc;
+    arc.source = e.source;
+    arc.target = e.target;
+    for (const auto& p : e.polyline) arc.points.push_back(lift_point(p[0], p[1], nullptr));
+    const std::size_t n = arc.points.size();
+    const bool singular_ends[2] = {L.topology.vertices[e.source].kind != Curve_topology_vertex::regular,
+                                   L.topology.vertices[e.target].kind != Curve_topology_vertex::regular};
+    if (n >= 2 && singular_ends[0] && arc.points[1].lifted)
+      arc.points[0] = lift_point(e.polyline[0][0], e.polyline[0][1], &arc.points[1].partner);
+    if (n >= 2 && singular_ends[1] && arc.points[n - 2].lifted)
+      arc.points[n - 1] = lift_point(e.polyline[n - 1][0], e.polyline[n - 1][1], &arc.points[n - 2].partner);
+    // Continuation: a point whose own lift does not solve the equations is lifted again from a neighbour's partner
+    // with a smaller residual, both ways along the arc, and keeps the better one. Next to a seam the kernel of B is
+    // nearly two-dimensional (the two patches nearly coincide there), its ratio can be far off (1e16 on teapot
+    // handle 12 x 13), and the grid seed covers the partner domain only.
+    auto residual_of = [](const Locus_point& q) { return std::isfinite(q.residual) ? q.residual : HUGE_VAL; };
+    auto relift = [&](std::size_t i, std::size_t from) {
+      if (verified(arc.points[i]) || !arc.points[from].lifted || !(residual_of(arc.points[from]) < residual_of(arc.points[i])))
+        return;
+      const Locus_point q = lift_point(e.polyline[i][0], e.polyline[i][1], &arc.points[from].partner);
+      if (residual_of(q) < residual_of(arc.points[i])) arc.points[i] = q;
+    };
+    for (std::size_t i = 1; i < n; ++i) relift(i, i - 1);
+    for (std::size_t i = n - 1; i-- > 0;) relift(i, i + 1);
+    L.arcs.push_back(arc);
+  }
+}
+
+inline std::vector<std::vector<long double>> evaluate_matrix(const Bezoutian_matrix& B, double x, double y) {
+  std::vector<std::vector<long double>> A(B.size(), std::vector<long double>(B.size()));
+  for (std::size_t i = 0; i < B.size(); ++i)
+    for (std::size_t j = 0; j < B.size(); ++j) A[i][j] = evaluate_double(B.entries[i][j], x, y);
+  return A;
+}
+
+// The same values as evaluate_matrix, with the coefficients converted to double once: the floating-point lifting
+// evaluates B at every traced point, and converting a gmpq costs a division (a quarter of the lifting's time on
+// a rational bicubic self-intersection).
+class Double_bezoutian_matrix {
+ public:
+  explicit Double_bezoutian_matrix(const Bezoutian_matrix& B) : n_(B.size()), entries_(n_ * n_) {
+    for (std::size_t i = 0; i < n_; ++i)
+      for (std::size_t j = 0; j < n_; ++j) {
+        const Polynomial_2<Rational>& p = B.entries[i][j];
+        std::vector<std::vector<double>>& c = entries_[i * n_ + j];
+        c.resize(std::size_t(std::max(0, p.degree() + 1)));
+        for (int b = 0; b <= p.degree(); ++b)
+          for (int a = 0; a <= p[b].degree(); ++a) c[std::size_t(b)].push_back(CGAL::to_double(p[b][a]));
+      }
+  }
+  std::vector<std::vector<long double>> operator()(double x, double y) const {
+    std::vector<std::vector<long double>> A(n_, std::vector<long double>(n_));
+    for (std::size_t i = 0; i < n_; ++i)
+      for (std::size_t j = 0; j < n_; ++j) {
+        const std::vector<std::vector<double>>& c = entries_[i * n_ + j];
+        double r = 0;  // Horner in y over Horner in x, as evaluate_double
+        for (std::size_t b = c.size(); b-- > 0;) {
+          double t = 0;
+          for (std::size_t a = c[b].size(); a-- > 0;) t = t * x + c[b][a];
+          r = r * y + t;
+        }
+        A[i][j] = r;
+      }
+    return A;
+  }
+
+ private:
+  std::size_t n_;
+  std::vector<std::vector<std::vector<double>>> entries_;  // entry (i, j): coefficients [power of y][power of x]
+};
+
+inline std::vector<std::vector<long double>> transpose(const std::vector<std::vector<long double>>& A) {
+  std::vector<std::vector<long double>> T(A.size(), std::vector<long double>(A.size()));
+  for (std::size_t i = 0; i < A.size(); ++i)
+    for (std::size_t j = 0; j < A.size(); ++j) T[j][i] = A[i][j];
+  return T;
+}
+
+inline double distance3(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// Computes the topology of the square-free D in the box unless D is constant (no locus: proved empty) or its
+// degree is above the limit; returns whether lifting should follow.
+inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_options& o) {
+  // the box's sides on D = 0 are reported apart (edge_lines); the subdivision cannot follow a curve along its edge
+  const Box_edge_lines lines = box_edge_lines(L.equation.square_free, o.box);
+  for (int side : lines.sides) {
+    Locus_edge_line e;
+    e.side = side;
+    e.value = side_value(o.box, side);
+    L.edge_lines.push_back(e);
+  }
+  const Polynomial_2<Integer>& D = lines.rest;
+  L.topology.box = o.box;
+  if (D.degree() <= 0 && D[0].degree() <= 0) {
+    L.topology_computed = true;  // D is a nonzero constant: the locus is empty, proved
+    return false;
+  }
+  int total = -1;
+  for (int j = 0; j <= D.degree(); ++j)
+    if (!CGAL::is_zero(D[j])) total = std::max(total, j + D[j].degree());
+  Subdivision_topology_options so = o.subdivision;
+  if (so.multiple_points.empty()) so.multiple_points = matrix_zero_points(L.equation, o.box);
+  const Subdivision_topology_result sub = subdivide_curve_in_box(D, o.box, so);
+  if (sub.certified) {
+    L.topology = sub.topology;
+    L.topology_computed = true;
+    L.topology_method = "subdivision";
+    return true;
+  }
+  if (total > o.max_total_degree_for_topology) {
+    L.note = "the certified topology of D = 0 (total degree " + std::to_string(total) +
+             ") was not computed: the subdivision did not certify it (" + sub.reason +
+             ") and CGAL's whole-plane curve analysis is not attempted above max_total_degree_for_topology = " +
+             std::to_string(o.max_total_degree_for_topology) + "; the implicit equation D is exact";
+    return false;
+  }
+  if (!o.whole_plane_topology) {
+    L.note = "the certified topology of D = 0 (total degree " + std::to_string(total) +
+             ") was not computed: the subdivision did not certify it (" + sub.reason +
+             ") and no whole-plane topology policy is set (Surface_intersection_options::whole_plane_topology, e.g. "
+             "Cgal_curve_analysis); the implicit equation D is exact";
+    return false;
+  }
+  try {
+    L.topology = o.whole_plane_topology(D, o.box, o.tolerance, o.samples_per_arc);
+  } catch (const Error&) {
+    throw;
+  } catch (...) {  // CGAL's analysis signals degenerate input by exceptions of its own (e.g. Zero_resultant_exception)
+    L.note = "the certified topology of D = 0 was not computed: the subdivision did not certify it (" + sub.reason +
+             ") and CGAL's curve analysis failed on it; the implicit equation D is exact";
+    return false;
+  }
+  L.topology_computed = true;
+  L.topology_method = "curve analysis";
+  if (L.note.empty()) L.note = "subdivision: " + sub.reason + "; topology by CGAL's curve analysis";
+  return true;
+}
+
+// The geometric proofs used by the subdivision (internal/double_partner_witness.h): nodes and isolated points of
+// D = 0 proved by two partners, and regions without any partner in the partner domain left out. Hooks set by the
+// caller are kept.
+inline Surface_intersection_options with_partner_proofs(const Surface_intersection_options& o,
+                                                        const Partner_equations& eq) {
+  Surface_intersection_options ow = o;
+  if (!ow.subdivision.singular_point_witness)
+    ow.subdivision.singular_point_witness = [eq](const Parameter_box& b, const std::array<double, 2>& x) {
+      return prove_double_partner_point(eq, b, x);
+    };
+  if (!o.partner_domain_unbounded && !ow.subdivision.no_genuine_points) {
+    const Parameter_box domain = o.partner_domain;
+    ow.subdivision.no_genuine_points = Genuine_point_exclusion(eq, domain);
+  }
+  return ow;
+}
+
+
+// The parameter in [0,1] of the point of C nearest to X (floating point: it only places a traced point).
+inline double nearest_parameter(const Rational_bezier_curve_3<Rational>& C, const std::array<double, 3>& X) {
+  auto d2 = [&](double t) {
+    const auto p = C.evaluate(t);
+    return (p[0] - X[0]) * (p[0] - X[0]) + (p[1] - X[1]) * (p[1] - X[1]) + (p[2] - X[2]) * (p[2] - X[2]);
+  };
+  const int n = 256;
+  int best = 0;
+  for (int i = 1; i <= n; ++i)
+    if (d2(double(i) / n) < d2(double(best) / n)) best = i;
+  double a = std::max(0.0, double(best - 1) / n), b = std::min(1.0, double(best + 1) / n);
+  for (int it = 0; it < 60; ++it) {  // golden section on the bracket
+    const double m1 = b - (b - a) * 0.6180339887498949, m2 = a + (b - a) * 0.6180339887498949;
+    if (d2(m1) < d2(m2)) b = m2; else a = m1;
+  }
+  return 0.5 * (a + b);
+}
+
+// The point (u, v) of a box side on D = 0 whose cause makes every point genuine (collapsed, shared_curve), with
+// its pair: the partner's iso-curve M gives one point exactly, the nearest point of the side's own iso-curve C the
+// other (for a collapsed C, its far end). Genuine and proved; the partner itself is floating point.
+inline Locus_point edge_line_point(const Edge_line_explanation& x, int side, const Surface_intersection_options& o,
+                                   const Rational_bezier_patch<Rational>& phi,
+                                   const Rational_bezier_patch<Rational>* psi, double u, double v) {
+  const Parameter_box& d = o.partner_domain;
+  const bool vertical = side_is_vertical(side);
+  const double c = vertical ? u : v, f = vertical ? v : u;
+  const double f0 = CGAL::to_double(vertical ? o.box.v0 : o.box.u0), f1 = CGAL::to_double(vertical ? o.box.v1 : o.box.u1);
+  const double tau = f1 > f0 ? (f - f0) / (f1 - f0) : 0;
+  const bool own_point = is_point_curve(x.own);
+  // the pair (P on C, Q on M): C is the side's own iso-curve over the partner domain, M the partner's at the
+  // fixed coordinate cp; for a collapsed C paired with itself (partner_side -1) Q is the sample's own point
+  const double o0 = CGAL::to_double(vertical ? d.v0 : d.u0), o1 = CGAL::to_double(vertical ? d.v1 : d.u1);
+  const double cp = x.partner_side < 0 ? c : CGAL::to_double(side_value(d, x.partner_side));
+  const double sigma = own_point ? (std::fabs(f - o0) > std::fabs(f - o1) ? 0.0 : 1.0)
+                                 : nearest_parameter(x.own, x.other.evaluate(tau));
+  const double g = o0 + sigma * (o1 - o0);  // the free coordinate of P on C
+  Locus_point q;
+  q.projection = {u, v};
+  q.lifted = true;
+  if (psi) {  // intersection: first (u, v) on phi, second (s, t) on psi
+    q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+    q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+    q.partner = {q.first[1], q.second[0]};
+    q.point_3d = phi.evaluate(q.first[0], q.first[1]);
+    q.residual = distance3(q.point_3d, psi->evaluate(q.second[0], q.second[1]));
+  } else {  // self-intersection: first (u, v + k), second (u + l, v)
+    q.first = vertical ? std::array<double, 2>{c, g} : std::array<double, 2>{u, cp};
+    q.second = vertical ? std::array<double, 2>{cp, v} : std::array<double, 2>{g, c};
+    q.partner = {q.second[0] - u, q.first[1] - v};
+    q.point_3d = phi.evaluate(q.second[0], q.second[1]);
+    q.residual = distance3(phi.evaluate(q.first[0], q.first[1]), q.point_3d);
+  }
+  q.genuine = q.status_proved = true;
+  return q;
+}
+
+// The box's sides on D = 0 (found by topology_is_affordable): their cause (internal/box_edge_lines.h) and sample
+// points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
+// exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
+template <class Lift>
+void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o,
+                         const Rational_bezier_patch<Rational>& phi, const Rational_bezier_patch<Rational>* psi,
+                         Lift lift_point) {
+  const Parameter_box& b = o.box;
+  const Parameter_box& d = o.partner_domain;
+  const char* names[2][4] = {{"v", "u", "v", "u"}, {"t", "u", "t", "u"}};
+  for (Locus_edge_line& e : L.edge_lines) {
+    const Edge_line_explanation x = explain_edge_line(e.side, b, d, o.partner_domain_unbounded, phi, psi);
+    const bool vertical = side_is_vertical(e.side);
+    e.cause = Locus_edge_line::Cause(int(x.cause));
+    e.partner_side = x.partner_side;
+    e.genuine = x.cause == Edge_line_explanation::collapsed || x.cause == Edge_line_explanation::shared_curve;
+    e.status_proved = x.cause != Edge_line_explanation::unexplained;
+    const std::string line = std::string(names[psi ? 1 : 0][e.side]) + " = " + std::to_string(CGAL::to_double(e.value));
+    switch (x.cause) {
+      case Edge_line_explanation::collapsed:
+        e.description = "the side " + line + " lies on D = 0: a collapsed edge (one 3D point), genuine";
+        break;
+      case Edge_line_explanation::shared_curve:
+        // the partner's side: of the second patch (s = c') for a side u = c, of the first (v = c') for t = c
+        e.description = "the side " + line + " lies on D = 0: a boundary curve shared with the side " +
+                        (psi ? (vertical ? "s" : "v") : (vertical ? "u" : "v")) + " = " +
+                        std::to_string(CGAL::to_double(side_value(d, x.partner_side))) +
+                        (psi ? (vertical ? " of the second patch" : " of the first patch") : "") + ", genuine";
+        break;
+      case Edge_line_explanation::outside_domain:
+        e.description = "the side " + line + " lies on D = 0, outside the partner domain: phantom";
+        break;
+      default:
+        e.description = "the side " + line + " lies on D = 0; its status is not proved";
+    }
+    const int n = std::max(1, o.samples_per_arc);
+    const double c = CGAL::to_double(e.value);
+    const double f0 = CGAL::to_double(vertical ? b.v0 : b.u0), f1 = CGAL::to_double(vertical ? b.v1 : b.u1);
+    for (int i = 0; i <= n; ++i) {
+      const double tau = double(i) / n, f = f0 + tau * (f1 - f0);
+      const double u = vertical ? c : f, v = vertical ? f : c;
+      if (!e.genuine) {
+        Locus_point q = lift_point(u, v, nullptr);
+        if (e.status_proved) q.genuine = false, q.status_proved = true;  // outside the domain: phantom, proved
+        e.points.push_back(q);
+        continue;
+      }
+      e.points.push_back(edge_line_point(x, e.side, o, phi, psi, u, v));
+    }
+  }
+}
+
+// The ends of the arcs that lie exactly on a box side on D = 0 whose cause is proved (a singular point of D where
+// the rest of D meets a seam or a collapsed edge, a boundary point there): the point lies on that side, so its
+// status is the side's, proved (genuine: a partner on the partner's iso-curve, which replaces the traced one,
+// since at a singular point the branches have different partners; phantom: the side's coordinate lies outside
+// the partner domain). The vertex enclosures are rationals rounded outward, so lo == hi == the side's value
+// holds only for a point exactly on the side.
+inline void mark_ends_on_edge_lines(Surface_locus& L, const Surface_intersection_options& o,
+                                    const Rational_bezier_patch<Rational>& phi,
+                                    const Rational_bezier_patch<Rational>* psi) {
+  for (const Locus_edge_line& e : L.edge_lines) {
+    if (!e.status_proved) continue;
+    const bool vertical = side_is_vertical(e.side);
+    std::optional<Edge_line_explanation> x;  // computed on first use (exact, a few curves)
+    for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+      auto& pts = L.arcs[k].points;
+      if (pts.empty()) continue;
+      const Curve_topology_edge& edge = L.topology.edges[k];
+      for (const bool last : {false, true}) {  // (by position: a loop's source and target may be one vertex)
+        const std::size_t end = last ? edge.target : edge.source;
+        if (end >= L.topology.vertices.size()) continue;
+        const Curve_topology_vertex& w = L.topology.vertices[end];
+        const double lo = vertical ? w.u_lo : w.v_lo, hi = vertical ? w.u_hi : w.v_hi;
+        if (!(lo == hi && Rational(lo) == e.value)) continue;
+        Locus_point& q = last ? pts.back() : pts.front();
+        if (!e.genuine) {
+          q.genuine = false;
+          q.status_proved = true;
+          continue;
+        }
+        if (!x) x = explain_edge_line(e.side, o.box, o.partner_domain, o.partner_domain_unbounded, phi, psi);
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        q = edge_line_point(*x, e.side, o, phi, psi, vertical ? CGAL::to_double(e.value) : q.projection[0],
+                            vertical ? q.projection[1] : CGAL::to_double(e.value));
+        q.partner_enclosure = {{{nan, nan}, {nan, nan}}};
+      }
+    }
+  }
+}
+
+// The certified crossing that a split point reports (its side and proved box).
+inline Partner_domain_crossing crossing_of(const Locus_split_point& sp) {
+  Partner_domain_crossing c;
+  c.side = {sp.point, sp.coordinate, sp.bound};
+  for (int d = 0; d < 4; ++d) c.box[d] = Double_interval{sp.box[d][0], sp.box[d][1]};
+  return c;
+}
+
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_equations& eq, const Locus_split_point& sp,
+                                                                  int bits) {
+  if (bits < 1 || bits > 100000) throw Invalid_input("refine_split_point: bits must be in [1, 100000]");
+  const auto r = refine_crossing(eq, crossing_of(sp), bits);
+  if (!r) throw Error("refine_split_point: the refinement of the split point's box failed");
+  return *r;
+}
+
+// Inserts the certified split points (internal/partner_domain_crossings.h) into the arcs of a subdivision topology:
+// between consecutive traced points whose floating-point statuses differ, the crossing of a side of the partner
+// domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
+// the pieces' index ranges shifted) and a Locus_split_point.
+template <class Lift>
+void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                         Lift lift_point) {
+  if (L.topology_method != "subdivision" || o.partner_domain_unbounded) return;
+  const std::vector<Partner_domain_side> sides = partner_domain_sides(o.partner_domain, o.box);
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    Curve_topology_edge& e = L.topology.edges[k];
+    if (arc.points.size() != e.polyline.size()) continue;
+    std::vector<std::pair<std::size_t, Partner_domain_crossing>> found;
+    for (std::size_t i = 0; i + 1 < arc.points.size(); ++i) {
+      const Locus_point &p = arc.points[i], &q = arc.points[i + 1];
+      if (p.genuine == q.genuine || !verified(p) || !verified(q)) continue;
+      const Curve_topology_piece* pc = nullptr;
+      for (const auto& x : e.pieces)
+        if (x.graph_axis >= 0 && x.first <= i && i + 1 <= x.last) pc = &x;
+      if (!pc) continue;
+      const std::array<double, 4> za{p.projection[0], p.projection[1], p.partner[0], p.partner[1]},
+          zb{q.projection[0], q.projection[1], q.partner[0], q.partner[1]};
+      if (auto c = crossing_between(eq, o.partner_domain, sides, za, zb, pc->cell, pc->graph_axis))
+        found.emplace_back(i, *c);
+    }
+    for (auto it = found.rbegin(); it != found.rend(); ++it) {  // from the back: earlier indices stay valid
+      const std::size_t i = it->first;
+      const auto& Z = it->second.box;
+      const std::array<double, 2> y{Z[2].mid(), Z[3].mid()};
+      Locus_point q = lift_point(Z[0].mid(), Z[1].mid(), &y);
+      q.genuine = q.status_proved = true;
+      q.partner_enclosure = {{{Z[2].lo, Z[2].hi}, {Z[3].lo, Z[3].hi}}};
+      arc.points.insert(arc.points.begin() + i + 1, q);
+      e.polyline.insert(e.polyline.begin() + i + 1, std::array<double, 2>{Z[0].mid(), Z[1].mid()});
+      for (auto& x : e.pieces) {
+        if (x.first > i) ++x.first;
+        if (x.last > i) ++x.last;
+      }
+    }
+    for (std::size_t j = 0; j < found.size(); ++j) {
+      const auto& c = found[j].second;
+      Locus_split_point sp;
+      sp.arc = k;
+      sp.index = found[j].first + 1 + j;
+      sp.point = c.side.point;
+      sp.coordinate = c.side.coordinate;
+      sp.bound = c.side.bound;
+      for (int d = 0; d < 4; ++d) sp.box[d] = {c.box[d].lo, c.box[d].hi};
+      L.split_points.push_back(sp);
+    }
+  }
+}
+
+// Proves the genuine / phantom status along the arcs of a subdivision topology (internal/certified_lifting.h),
+// starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
+template <class Lift>
+void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                     Lift lift_point, const Rational_bezier_patch<Rational>* self_patch = nullptr) {
+  if (L.topology_method != "subdivision" || !o.certify_lifting) return;
+  // self-intersection: the partner equations divided by the trivial partner, for spans near pinch points
+  std::vector<Blown_up_partner_equations> blown_up;
+  if (self_patch)
+    for (int chart = 0; chart < 2; ++chart) blown_up.emplace_back(*self_patch, chart);
+  // the kernel of B: phantom proofs where the partner is far outside the domain (kernel_partner_proofs.h)
+  const Kernel_partner_system kernel(L.equation.matrix, L.self_intersection);
+  Exclusion_budget budget;
+  budget.left = budget.fallback_left = o.lifting_exclusion_budget;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    // the split points: their status is their own proof (about the exact crossing); the spans next to them are
+    // decided from the side of the boundary line that the partner is on (classify_span_at_split)
+    std::vector<bool> split(arc.points.size(), false);
+    std::vector<Partner_domain_crossing> crossings(arc.points.size());
+    std::vector<const Partner_domain_crossing*> split_boxes(arc.points.size(), nullptr);
+    for (const Locus_split_point& sp : L.split_points)
+      if (sp.arc == k && sp.index < split.size()) {
+        split[sp.index] = true;
+        crossings[sp.index] = crossing_of(sp);
+        split_boxes[sp.index] = &crossings[sp.index];
+      }
+    std::vector<std::array<double, 2>> partner;
+    std::vector<bool> known, float_genuine;
+    for (const Locus_point& q : arc.points) {
+      float_genuine.push_back(q.genuine);
+      partner.push_back(q.partner);
+      // (a trivial partner (0, 0) of a self-intersection point is no guess for its true partner)
+      known.push_back(q.lifted && std::isfinite(q.partner[0]) && std::isfinite(q.partner[1]) &&
+                      !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9));
+    }
+    const Edge_partner_certificate c =
+        certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
+                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up, &kernel);
+    arc.undecided_fraction = c.undecided_fraction;
+    for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
+      if (c.point_status[i] != Partner_status::undecided && !split[i]) {
+        Locus_point& q = arc.points[i];
+        const auto& y = c.partner_enclosure[i];
+        if (c.point_status[i] == Partner_status::genuine && q.lifted &&
+            !(y[0].lo <= q.partner[0] && q.partner[0] <= y[0].hi && y[1].lo <= q.partner[1] && q.partner[1] <= y[1].hi)) {
+          // the floating-point lifting followed another (e.g. the trivial) partner: restart it from the proved one
+          const std::array<double, 2> guess{y[0].mid(), y[1].mid()};
+          q = lift_point(q.projection[0], q.projection[1], &guess);
+        }
+        q.status_proved = true;
+        q.genuine = c.point_status[i] == Partner_status::genuine;
+        if (q.genuine) q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
+      }
+  }
+}
+
+} // namespace internal
+
+/// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
+/// every traced point lifted to the two parameter points (u, v+k) and (u+l, v) with the same image.
+inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rational>& patch,
+                                             const Surface_intersection_options& o = {}) {
+  Surface_locus L;
+  L.self_intersection = true;
+  L.equation = self_intersection_equation(patch, o.formula);
+  if (L.equation.is_degenerate())
+    throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
+                        "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
+                        "infinity, as for an exact graph (u, v, f(u,v)))");
+  if (o.pinch_point_boxes > 0) {
+    Pinch_point_search pinch = internal::find_pinch_points(patch, o.box, o.pinch_point_boxes);
+    L.pinch_points = pinch.points;
+    L.pinch_points_complete = pinch.complete;
+    L.pinch_points_note = pinch.reason;
+  } else {
+    L.pinch_points_note = "not searched (pinch_point_boxes = 0)";
+  }
+  const bool traced = internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch)));
+  const Bezoutian_matrix& B = L.equation.matrix;
+  const internal::Double_bezoutian_matrix B_double(B);
+  auto lift_point = [&](double u, double v, const std::array<double, 2>* guess) {
+    Locus_point q;
+    q.projection = {u, v};
+    std::array<double, 2> lk;  // (l, k)
+    if (guess) {
+      lk = *guess;
+      q.lifted = true;
+    } else {
+      long double k = 0, l = 0;
+      const auto x = internal::null_vector(internal::transpose(B_double(u, v)));
+      // U = [l^i k^j]: l = ratio along the first exponent, k along the second
+      q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, l) && internal::monomial_ratio(B.row_monomials, x, 1, k);
+      lk = {double(l), double(k)};
+    }
+    auto residual = [&](double l, double k) {
+      auto a = patch.evaluate(u, v + k), b = patch.evaluate(u + l, v);
+      return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    if (!q.lifted || !std::isfinite(lk[0]) || !std::isfinite(lk[1])) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
+                                                             CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
+      lk = internal::grid_seed(residual, range);
+      q.lifted = std::isfinite(lk[0]);
+      if (!q.lifted) return q;
+    }
+    lk = internal::polish_partner(residual, lk);
+    if (!guess) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.u0) - u, CGAL::to_double(d.u1) - u,
+                                                             CGAL::to_double(d.v0) - v, CGAL::to_double(d.v1) - v};
+      lk = internal::search_if_unsolved(residual, lk, range, true);
+    }
+    q.partner = lk;
+    q.first = {u, v + lk[1]};
+    q.second = {u + lk[0], v};
+    q.point_3d = patch.evaluate(q.second[0], q.second[1]);
+    q.residual = internal::distance3(patch.evaluate(q.first[0], q.first[1]), q.point_3d);
+    const bool distinct = std::fabs(lk[0]) + std::fabs(lk[1]) > 1e-9;
+    q.genuine = distinct && internal::verified(q) && (o.partner_domain_unbounded ||
+                             (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
+    return q;
+  };
+  internal::describe_edge_lines(L, o, patch, nullptr, lift_point);
+  for (const Locus_edge_line& e : L.edge_lines)  // the rank-1 points of a collapsed side are not isolated
+    if (e.cause == Locus_edge_line::collapsed && o.pinch_point_boxes > 0 && !L.pinch_points_complete)
+      L.pinch_points_note += "; the box side " + std::string(e.side % 2 ? "u" : "v") + " = " +
+                             std::to_string(CGAL::to_double(e.value)) +
+                             " is a collapsed edge, along which the Jacobian has rank <= 1 everywhere";
+  if (!traced) return L;
+  internal::lift_arcs(L, lift_point);
+  internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
+  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
+  internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
+  return L;
+}
+
+/// \brief The split point `sp` of the self-intersection locus of `patch` to any precision: boxes with rational
+/// bounds {lo, hi}, narrower than 2^-bits, around its exact coordinates (u, v, l, k) (Locus_split_point::box
+/// refined by Krawczyk's test in MPFI arithmetic, internal/partner_domain_crossings.h). Throws Error if the
+/// refinement fails.
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Rational_bezier_patch<Rational>& patch,
+                                                                  const Locus_split_point& sp, int bits) {
+  return internal::refine_split_point(internal::Partner_equations(patch), sp, bits);
+}
+
+/// \brief The same for the intersection locus of `phi` and `psi`: coordinates (u, t, v, s).
+inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Rational_bezier_patch<Rational>& phi,
+                                                                  const Rational_bezier_patch<Rational>& psi,
+                                                                  const Locus_split_point& sp, int bits) {
+  return internal::refine_split_point(internal::Partner_equations(phi, psi), sp, bits);
+}
+
+/// \brief The boundary contacts of two patches (see Boundary_contact): every pair of boundary curves is
+/// intersected exactly; common pieces are reported once per pair of sides, isolated common points once per
+/// point (a corner belongs to two sides) unless they lie on a reported common piece.
+inline std::vector<Boundary_contact> boundary_contacts(const Rational_bezier_patch<Rational>& phi,
+                                                       const Rational_bezier_patch<Rational>& psi) {
+  using Curve = Rational_bezier_curve_3<Rational>;
+  std::vector<Boundary_contact> shared, points;
+  // (u, v) on the first patch of parameter a along side s
+  auto uv = [](int side, const Algebraic_real& a) {
+    switch (side) {
+      case 0: return std::make_pair(a, Algebraic_real(0));
+      case 1: return std::make_pair(Algebraic_real(1), a);
+      case 2: return std::make_pair(a, Algebraic_real(1));
+      default: return std::make_pair(Algebraic_real(0), a);
+    }
+  };
+  auto on_shared = [&](const std::pair<Algebraic_real, Algebraic_real>& p) {
+    for (const auto& c : shared) {
+      const auto q0 = uv(c.side_first, c.first_0), q1 = uv(c.side_first, c.first_1);
+      const bool u_in = (q0.first <= p.first && p.first <= q1.first) || (q1.first <= p.first && p.first <= q0.first);
+      const bool v_in = (q0.second <= p.second && p.second <= q1.second) || (q1.second <= p.second && p.second <= q0.second);
+      if (u_in && v_in) return true;
+    }
+    return false;
+  };
+  auto is_point = [](const Curve& c) {  // positive weights: constant iff all control points coincide
+    for (std::size_t i = 1; i < c.number_of_control_points(); ++i)
+      if (c.control_point(i) != c.control_point(0)) return false;
+    return true;
+  };
+  auto approx = [](const Curve& c, const Algebraic_real& a) {
+    const auto x = c.evaluate(a.to_double());
+    return std::array<double, 3>{x[0], x[1], x[2]};
+  };
+  for (int s1 = 0; s1 < 4; ++s1) {
+    const Curve c1 = phi.boundary_curve<Curve>(s1);
+    for (int s2 = 0; s2 < 4; ++s2) {
+      const Curve c2 = psi.boundary_curve<Curve>(s2);
+      const Curve_intersection_result r = intersect_curves(c1, c2);
+      const bool collapsed = is_point(c1) || is_point(c2);
+      for (const auto& ov : r.overlaps) {
+        Boundary_contact b{s1, s2, !collapsed, ov.s0, ov.s1, ov.t0, ov.t1, approx(c1, ov.s0)};
+        if (collapsed)
+          points.push_back(b);
+        else
+          shared.push_back(b);
+      }
+      for (const auto& p : r.points) points.push_back({s1, s2, false, p.s, p.s, p.t, p.t, approx(c1, p.s)});
+    }
+  }
+  std::vector<Boundary_contact> out = shared;
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> seen;
+  for (const auto& b : points) {
+    const auto p = uv(b.side_first, b.first_0);
+    if (on_shared(p)) continue;
+    bool dup = false;
+    for (const auto& q : seen) dup = dup || (q.first == p.first && q.second == p.second);
+    if (dup) continue;
+    seen.push_back(p);
+    out.push_back(b);
+  }
+  return out;
+}
+
+/// \brief Intersection curve of the patches `phi` (u,v) and `psi` (s,t) (Theorems 2, 3): D(u,t), its certified
+/// topology in `o.box`, and every traced point lifted to (u,v) on phi and (s,t) on psi.
+inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& phi,
+                                        const Rational_bezier_patch<Rational>& psi,
+                                        const Surface_intersection_options& o = {}) {
+  Surface_locus L;
+  L.self_intersection = false;
+  L.contacts = boundary_contacts(phi, psi);
+  L.equation = intersection_equation(phi, psi, o.formula);
+  if (L.equation.is_degenerate())
+    throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
+                        "are not generic in the sense of Theorems 2-3");
+  const bool traced =
+      internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)));
+  const Bezoutian_matrix& B = L.equation.matrix;
+  const internal::Double_bezoutian_matrix B_double(B);
+  auto lift_point = [&](double u, double t, const std::array<double, 2>* guess) {
+    Locus_point q;
+    q.projection = {u, t};
+    std::array<double, 2> vs;  // (v, s)
+    if (guess) {
+      vs = *guess;
+      q.lifted = true;
+    } else {
+      // U = [s^i v^j] with the monomial 1 present: s = U(1,0)/U(0,0), v = U(0,1)/U(0,0)
+      long double s = 0, v = 0;
+      const auto x = internal::null_vector(internal::transpose(B_double(u, t)));
+      q.lifted = internal::monomial_ratio(B.row_monomials, x, 0, s) && internal::monomial_ratio(B.row_monomials, x, 1, v);
+      vs = {double(v), double(s)};
+    }
+    auto residual = [&](double v, double s) {
+      auto a = phi.evaluate(u, v), b = psi.evaluate(s, t);
+      return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    };
+    if (!q.lifted || !std::isfinite(vs[0]) || !std::isfinite(vs[1])) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
+                                                             CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
+      vs = internal::grid_seed(residual, range);
+      q.lifted = std::isfinite(vs[0]);
+      if (!q.lifted) return q;
+    }
+    vs = internal::polish_partner(residual, vs);
+    if (!guess) {
+      const Parameter_box& d = o.partner_domain;
+      const std::array<double, 4> range =
+          o.partner_domain_unbounded ? std::array<double, 4>{-2, 2, -2, 2}
+                                     : std::array<double, 4>{CGAL::to_double(d.v0), CGAL::to_double(d.v1),
+                                                             CGAL::to_double(d.u0), CGAL::to_double(d.u1)};
+      vs = internal::search_if_unsolved(residual, vs, range, false);
+    }
+    q.partner = vs;
+    q.first = {u, vs[0]};
+    q.second = {vs[1], t};
+    q.point_3d = phi.evaluate(q.first[0], q.first[1]);
+    q.residual = internal::distance3(q.point_3d, psi.evaluate(q.second[0], q.second[1]));
+    q.genuine = internal::verified(q) && (o.partner_domain_unbounded ||
+                (internal::inside(o.partner_domain, q.first) && internal::inside(o.partner_domain, q.second)));
+    return q;
+  };
+  internal::describe_edge_lines(L, o, phi, &psi, lift_point);
+  if (!traced) return L;
+  internal::lift_arcs(L, lift_point);
+  internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::mark_ends_on_edge_lines(L, o, phi, &psi);
+  return L;
+}
+
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H

@@ -1,0 +1,196 @@
+// The edges of the box that lie on D = 0 (a collapsed edge of a patch, a boundary curve shared by two patches):
+// D = (x - c)·Q exactly, and the rest Q of the curve is analysed on its own.
+#ifndef BEZOUTIAN_INTERSECTION_INTERNAL_BOX_EDGE_LINES_H
+#define BEZOUTIAN_INTERSECTION_INTERNAL_BOX_EDGE_LINES_H
+
+#include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/topology/Curve_topology.h>
+#include <bezoutian/arithmetic/Error.h>
+#include <bezoutian/algebraic/Polynomial_normalization.h>
+#include <bezoutian/geometry/Rational_bezier_curve.h>
+#include <bezoutian/geometry/Rational_bezier_patch.h>
+#include <bezoutian/algebraic/Root_isolation.h>
+#include <bezoutian/arithmetic/number_types.h>
+
+#include <array>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+// Sides in the order of Rational_bezier_patch::boundary_curve: 0: y = y0, 1: x = x1, 2: y = y1, 3: x = x0.
+inline bool side_is_vertical(int side) { return side == 1 || side == 3; }
+
+inline Rational side_value(const Parameter_box& b, int side) {
+  switch (side) {
+    case 0: return b.v0;
+    case 1: return b.u1;
+    case 2: return b.v1;
+    default: return b.u0;
+  }
+}
+
+// D(c, y) == 0 (vertical) or D(x, c) == 0 as a polynomial, decided exactly.
+inline bool vanishes_on_line(const Polynomial_2<Integer>& D, bool vertical, const Rational& c) {
+  if (vertical) {
+    for (int j = 0; j <= D.degree(); ++j) {
+      Rational x(0);
+      for (int i = D[j].degree(); i >= 0; --i) x = x * c + Rational(D[j][i]);
+      if (!CGAL::is_zero(x)) return false;
+    }
+    return true;
+  }
+  const int dx = [&] {
+    int d = 0;
+    for (int j = 0; j <= D.degree(); ++j) d = std::max(d, D[j].degree());
+    return d;
+  }();
+  for (int i = 0; i <= dx; ++i) {
+    Rational x(0);
+    for (int j = D.degree(); j >= 0; --j) x = x * c + (i <= D[j].degree() ? Rational(D[j][i]) : Rational(0));
+    if (!CGAL::is_zero(x)) return false;
+  }
+  return true;
+}
+
+// The factor q x - p (vertical) or q y - p of c = p / q, primitive.
+inline Polynomial_2<Integer> line_factor(bool vertical, const Rational& c) {
+  const Integer p = c.numerator(), q = c.denominator();
+  if (vertical) return Polynomial_2<Integer>(Polynomial_1<Integer>(-p, q));
+  return Polynomial_2<Integer>(Polynomial_1<Integer>(-p), Polynomial_1<Integer>(q));
+}
+
+/// The box's edges contained in D = 0 and D with their factors removed.
+struct Box_edge_lines {
+  std::vector<int> sides;     ///< sides (0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0) along which D vanishes
+  Polynomial_2<Integer> rest;  ///< D divided by the factor of each of those lines, normalized
+};
+
+// D square-free: each line factor divides it once. The division is exact over Z (the factors are primitive, Gauss's
+// lemma), and checked: a remainder would be a bug, not an input error.
+inline Box_edge_lines box_edge_lines(const Polynomial_2<Integer>& D, const Parameter_box& box) {
+  Box_edge_lines r;
+  r.rest = D;
+  for (int side = 0; side < 4; ++side) {
+    const bool vertical = side_is_vertical(side);
+    const Rational c = side_value(box, side);
+    if (side >= 2 && c == side_value(box, side - 2)) continue;  // a degenerate box: the same line twice
+    if (CGAL::is_zero(r.rest) || !vanishes_on_line(r.rest, vertical, c)) continue;
+    const Polynomial_2<Integer> f = line_factor(vertical, c), q = CGAL::integral_division(r.rest, f);
+    if (q * f != r.rest) throw Error("box_edge_lines: inexact division by a line factor");
+    r.rest = normalized_primitive_part(q);
+    r.sides.push_back(side);
+  }
+  return r;
+}
+
+using Edge_curve = Rational_bezier_curve_3<Rational>;
+
+inline bool is_point_curve(const Edge_curve& c) {
+  for (std::size_t i = 1; i < c.number_of_control_points(); ++i)
+    if (c.control_point(i) != c.control_point(0)) return false;
+  return true;
+}
+
+// Is every point of M (over [0,1]) a point of C (over [0,1])? Exact; false when undecided (a pole in [0,1]).
+inline bool lies_on(const Edge_curve& M, const Edge_curve& C) {
+  for (const Edge_curve* c : {&M, &C})
+    for (std::size_t i = 0; i < c->number_of_control_points(); ++i)
+      if (CGAL::sign(c->weight(i)) <= 0) return false;  // positive weights: no pole, and the curve is in its hull
+  const bool m_point = is_point_curve(M), c_point = is_point_curve(C);
+  if (m_point && c_point) return M.control_point(0) == C.control_point(0);
+  if (c_point) return false;  // a curve is not one point (positive weights: constant iff the control points agree)
+  if (m_point) {  // P on C: a common root in [0,1] of X_k - P_k W
+    const auto H = C.power_form();
+    const auto P = M.control_point(0);
+    Polynomial_1<Rational> g(0);
+    for (int k = 0; k < 3; ++k) g = CGAL::gcd(g, H[k + 1] - Polynomial_1<Rational>(P[k]) * H[0]);
+    if (CGAL::is_zero(g) || g.degree() < 1) return false;
+    return !isolate_real_roots(g, Rational(0), Rational(1)).empty();
+  }
+  const Curve_intersection_result r = intersect_curves(M, C);
+  std::vector<std::pair<Algebraic_real, Algebraic_real>> pieces;  // ranges of M covered by C
+  for (const auto& o : r.overlaps) pieces.emplace_back(std::min(o.s0, o.s1), std::max(o.s0, o.s1));
+  std::sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  Algebraic_real reached(0);
+  for (const auto& q : pieces) {
+    if (reached < q.first) return false;
+    reached = std::max(reached, q.second);
+  }
+  return reached >= Algebraic_real(1);
+}
+
+/// Why a box side lies on D = 0, decided exactly (buse-elkadi-galligo-2008 §4: a point of D = 0 is a projected
+/// pair of preimages of one 3D point). Along the side one coordinate is fixed (c) and one is free (τ). The pair's
+/// point on the side's own iso-curve C (u = c of the first patch, t = c of the second, or for a self-intersection
+/// u = c or v = c of the patch) lies over the partner domain; the other point lies on an iso-curve M of the partner
+/// at a fixed coordinate c' and runs with τ. If M(τ) lies on C for every τ in the box, every point of the side is
+/// genuine: a collapsed edge (C and M one point) or a boundary curve shared with a side of the partner (the
+/// teapot's glued edges, a closed patch's seam).
+struct Edge_line_explanation {
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
+  Cause cause = unexplained;
+  int partner_side = -1;  ///< the side of the partner domain holding M (boundary_curve order), -1: C itself
+  Edge_curve own, other;  ///< C over the partner domain and M over the box (parameters in [0,1])
+};
+
+inline bool within(const Rational& a0, const Rational& a1, const Rational& b0, const Rational& b1) {
+  return b0 <= a0 && a1 <= b1;
+}
+
+// side: of the box (u = c for sides 1, 3; v or t = c for 0, 2). psi == nullptr: self-intersection of phi.
+inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& box, const Parameter_box& domain,
+                                               bool domain_unbounded, const Rational_bezier_patch<Rational>& phi,
+                                               const Rational_bezier_patch<Rational>* psi) {
+  Edge_line_explanation e;
+  const bool vertical = side_is_vertical(side);
+  const Rational c = side_value(box, side);
+  const Parameter_box& d = domain;
+  // the coordinate of the pair's point on C is c: outside the domain, no partner is genuine
+  if (!domain_unbounded && (vertical ? (c < d.u0 || d.u1 < c) : (c < d.v0 || d.v1 < c))) {
+    e.cause = Edge_line_explanation::outside_domain;
+    return e;
+  }
+  if (domain_unbounded) return e;
+  const bool free_inside = vertical ? within(box.v0, box.v1, d.v0, d.v1) : within(box.u0, box.u1, d.u0, d.u1);
+  if (!free_inside) return e;
+  try {
+    // C: the side's own iso-curve over the partner domain. M: iso-curves of the partner at the domain's sides, over
+    // the box (for a self-intersection also the side's own iso-curve over the box, when C is one point).
+    const Rational_bezier_patch<Rational>& own_patch = (psi && !vertical) ? *psi : phi;
+    const Rational_bezier_patch<Rational>& other_patch = psi ? (vertical ? *psi : phi) : phi;
+    // the free coordinate over the box, the other over the partner domain (u, v of phi; s, t of psi)
+    const Parameter_box own_range = vertical ? Parameter_box{box.u0, box.u1, d.v0, d.v1} : Parameter_box{d.u0, d.u1, box.v0, box.v1};
+    const Parameter_box other_range = vertical ? Parameter_box{d.u0, d.u1, box.v0, box.v1} : Parameter_box{box.u0, box.u1, d.v0, d.v1};
+    e.own = own_patch.restriction(own_range.u0, own_range.u1, own_range.v0, own_range.v1).boundary_curve<Edge_curve>(side);
+    const bool own_point = is_point_curve(e.own);
+    const Rational_bezier_patch<Rational> other =
+        other_patch.restriction(other_range.u0, other_range.u1, other_range.v0, other_range.v1);
+    // the partner's sides at a fixed coordinate of the same direction as the side (u = d.u0, d.u1 or v = d.v0, d.v1)
+    const int sides[2] = {vertical ? 3 : 0, vertical ? 1 : 2};
+    for (int ps : sides) {
+      const Rational cp = side_value(d, ps);
+      if (!psi && cp == c) continue;  // the side itself: below (a pair of distinct points only if C is one point)
+      const Edge_curve M = other.boundary_curve<Edge_curve>(ps);
+      if (lies_on(M, e.own)) {
+        e.cause = own_point ? Edge_line_explanation::collapsed : Edge_line_explanation::shared_curve;
+        e.partner_side = ps;
+        e.other = M;
+        return e;
+      }
+    }
+    if (!psi && own_point) {  // the side's own iso-curve is one point: every other point of it is a partner
+      e.other = phi.restriction(box.u0, box.u1, box.v0, box.v1).boundary_curve<Edge_curve>(side);
+      e.cause = Edge_line_explanation::collapsed;
+      return e;
+    }
+  } catch (const Error&) {
+    // a pole or a degenerate restriction: left unexplained
+  }
+  return e;
+}
+
+} // namespace internal
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_INTERSECTION_INTERNAL_BOX_EDGE_LINES_H
