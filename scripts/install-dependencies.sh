@@ -2,7 +2,8 @@
 # Installs what Bezoutian needs on Debian bookworm (run as root). Skips apt when everything is present.
 set -euo pipefail
 packages=(g++ cmake make ccache libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
-          catch2 nlohmann-json3-dev libcli11-dev libflint-dev libeigen3-dev
+          catch2 nlohmann-json3-dev libcli11-dev doxygen
+          libflint-dev  # FLINT: compared against in benchmark/, not used by the library
           libcgal-demo)  # libcgal-demo: CGAL's Bezier.dat (examples.tar.gz), compared against in the tests
 missing=()
 for p in "${packages[@]}"; do

@@ -3,7 +3,10 @@
 #define BEZOUTIAN_CLI_COMMANDS_H
 
 #include <CLI/CLI.hpp>
+
 #include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace bezoutian_cli {
@@ -16,14 +19,6 @@ struct Register {
   explicit Register(Registration r) { registry().push_back(std::move(r)); }
 };
 
-} // namespace bezoutian_cli
-
-#endif
-
-#include <memory>
-#include <string>
-
-namespace bezoutian_cli {
 
 /// Options shared by `bezoutian intersect` for curves and patches.
 struct Intersect_options {
@@ -40,9 +35,13 @@ struct Intersect_options {
 
 /// Curve/curve and curve/patch intersection (examples/cli/curve_intersect.cpp).
 void run_curve_intersect(const Intersect_options& o);
+/// A space curve (or segment) against a patch (examples/cli/curve_patch_intersect.cpp).
+void run_curve_patch_intersect(const Intersect_options& o);
 /// Patch/patch intersection (examples/cli/surface_commands.cpp).
 void run_patch_intersect(const Intersect_options& o);
 /// The --domain option of `intersect` for patches (shared by the dispatcher and the surface command).
 std::shared_ptr<std::string> patch_intersect_domain();
 
 } // namespace bezoutian_cli
+
+#endif  // BEZOUTIAN_CLI_COMMANDS_H

@@ -121,7 +121,6 @@ void run_curve_intersect(const Intersect_options& o) {
   if (!o.file_b.empty()) B = load_curves(o.file_b);
   const bool patch_involved = A.has_patches || (!o.file_b.empty() && B.has_patches);
   if (patch_involved) {
-    void run_curve_patch_intersect(const Intersect_options& o);  // examples/cli/curve_patch_intersect.cpp
     return run_curve_patch_intersect(o);
   }
   if (o.file_b.empty()) {

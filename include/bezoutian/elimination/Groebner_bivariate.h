@@ -231,8 +231,8 @@ struct Groebner_certificate {
   std::size_t primes = 0;             ///< word primes tried
   std::size_t discarded_primes = 0;   ///< bad (a leading coefficient vanishes), positive-dimensional or outvoted
   std::size_t certification_attempts = 0;  ///< exact checks of reconstructed candidates
-  int standard_monomials = -1;        ///< dim Q[s,t]/<B>, -1 for the exact fallback on a positive-dimensional ideal
-  int dimension = -1;                 ///< proved dim Q[s,t]/<F> = deg Res (-1: not used)
+  int standard_monomials = -1;        ///< dim Q[s,t]/\<B\>, -1 for the exact fallback on a positive-dimensional ideal
+  int dimension = -1;                 ///< proved dim Q[s,t]/\<F\> = deg Res (-1: not used)
   char eliminated = 0;                ///< 't': the bound deg_s Res_t(F1,F2); 's': deg_t Res_s(F1,F2); 0: none
   bool exact_fallback = false;        ///< computed by the exact rational Buchberger algorithm (lex_groebner_basis)
 };

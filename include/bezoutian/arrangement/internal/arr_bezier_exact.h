@@ -6,6 +6,7 @@
 #include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/arithmetic/Error.h>
+#include <bezoutian/arithmetic/profiling.h>
 #include <bezoutian/geometry/Rational_bezier_curve.h>
 #include <bezoutian/algebraic/Root_isolation.h>
 #include <bezoutian/intersection/curve_intersection_support.h>
@@ -21,29 +22,6 @@
 #include <utility>
 #include <vector>
 
-#ifdef BEZOUTIAN_ARR_PROFILE
-#include <chrono>
-#include <cstdio>
-namespace bezoutian { namespace internal {
-struct Arr_profile {
-  const char* name; long n = 0; double ms = 0;
-  explicit Arr_profile(const char* s) : name(s) {}
-  ~Arr_profile() { std::fprintf(stderr, "%-24s %8ld calls %9.2f ms\n", name, n, ms); }
-};
-struct Arr_timer {
-  Arr_profile& p; std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Arr_timer(Arr_profile& q) : p(q) { ++p.n; }
-  ~Arr_timer() { p.ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count(); }
-};
-}}
-#define BEZOUTIAN_ARR_CAT2(a, b) a##b
-#define BEZOUTIAN_ARR_CAT(a, b) BEZOUTIAN_ARR_CAT2(a, b)
-#define BEZOUTIAN_ARR_TIME(name)                                                    \
-  static internal::Arr_profile BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__)(name);        \
-  internal::Arr_timer BEZOUTIAN_ARR_CAT(arr_timer_, __LINE__)(BEZOUTIAN_ARR_CAT(arr_prof_, __LINE__))
-#else
-#define BEZOUTIAN_ARR_TIME(name)
-#endif
 
 namespace bezoutian {
 namespace internal {
