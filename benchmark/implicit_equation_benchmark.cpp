@@ -1,4 +1,4 @@
-// Issue 3 comparison: the implicit equation D of the self-intersection and intersection problems of seeded random
+// The implicit equation D of the self-intersection and intersection problems of seeded random
 // patches (integer control points in [-5,5], weights in [1,4] for rational ones, as benchmark/surface_benchmark.cpp),
 // our engine against
 //   (b) Berkowitz's division-free determinant (berkowitz_determinant, CGAL polynomials) of the same matrix,

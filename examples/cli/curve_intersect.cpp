@@ -1,4 +1,5 @@
-// bezoutian intersect A [B] for curves: certified curve/curve intersection (include/bezoutian/Curve_intersection.h).
+// bezoutian intersect A [B] for curves: certified curve/curve intersection
+// (include/bezoutian/intersection/Curve_intersection.h).
 #include "commands.h"
 #include "exact_json.h"
 #include "load.h"

@@ -1,5 +1,5 @@
 // bezoutian intersect for a space curve (or segment) and a patch: certified curve/patch intersection
-// (include/bezoutian/Curve_surface_intersection.h, du-1989 Problems 2.2a/2.2b).
+// (include/bezoutian/intersection/Curve_surface_intersection.h, du-1989 Problems 2.2a/2.2b).
 #include "commands.h"
 #include "exact_json.h"
 #include "load.h"

@@ -245,7 +245,7 @@ double to_polyline(const std::array<double, 3>& p, const Run& poly) {
 }
 // Every `stride`-th traced point lies on D = 0: first-order distance |D| / |grad D| < 1e-6, with D and its gradient
 // evaluated exactly at the point's double coordinates (independent of the floating-point sampling that produced
-// the point). Samples bisected on the power form of a high-degree D were off the curve.
+// the point). Samples bisected on the power form of a high-degree D would be off the curve.
 void check_traced_points_on_curve(const Surface_locus& L, std::size_t stride) {
   const Polynomial_2<Integer>& D = L.equation.square_free;
   for (const auto& arc : L.arcs)
@@ -488,7 +488,7 @@ TEST_CASE("pinch points: found exactly where the Jacobian has rank 1; a degenera
   CHECK(pinch >= 1);  // the identities above are the check; this only makes sure they were exercised
 }
 
-// Certified lifting (internal/certified_lifting.h), checked against a double curve known in closed form whose
+// Certified lifting (lifting/certified_lifting.h), checked against a double curve known in closed form whose
 // partner leaves the partner domain at a known parameter. Phi(u,v) = ((u - 3/10)^2, v^2, (u - 3/10)(v - 1/3)) as a
 // (3,2) patch: Phi(u, v) = Phi(u', v') with (u', v') != (u, v) iff v = v' = 1/3 and u' = 3/5 - u (v' = -v would need
 // v - 1/3 = v + 1/3). So the genuine self-intersection is the segment v = 1/3, 0 <= u <= 3/5 (the partner 3/5 - u
@@ -576,9 +576,9 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
 }
 
 // Regression: on this random bicubic pair (the first (3,3) polynomial pair of benchmark/surface_benchmark.cpp, D of
-// total degree 81) the arc samples were bisected on the power form of D and whole arcs of them sat on the cells'
-// edges, off the curve. Every traced point must lie on D = 0 (exact evaluation), and proved genuine points on both
-// patches.
+// total degree 81) arc samples bisected on the power form of D put whole arcs of them on the cells' edges, off the
+// curve (doc/surface_intersection.md, step 3). Every traced point must lie on D = 0 (exact evaluation), and proved
+// genuine points on both patches.
 TEST_CASE("bicubic pair: every traced point lies on D = 0", "[surface][sampling]") {
   std::mt19937 g(20261122);
   std::vector<Patch> made;  // the benchmark's sequence: (m,n) x rational x self/pair x 2 problems, two patches each
@@ -661,7 +661,7 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
   CHECK_THROWS_AS(refine_split_point(psi, phi, sp, 64), Error);
 }
 
-// The kernel of B (internal/kernel_partner_proofs.h) on a sheared fold, Phi = ((u - 3/10)^2, (v + u/2)^2,
+// The kernel of B (lifting/internal/kernel_partner_proofs.h) on a sheared fold, Phi = ((u - 3/10)^2, (v + u/2)^2,
 // (u - 3/10)(v + u/2 - 1/3)). By hand: Phi(u, v) = Phi(u', v') with u' != u forces u' = 3/5 - u and
 // v + u/2 = v' + u'/2 = 1/3, so the projected double curve is the line v = 1/30 + u/2, with the partner
 // (l, k) = (3/5 - 2u) (1, 1/2) (P = (u, 1/3 - u/2), Q = (3/5 - u, v)): genuine for u <= 3/5, phantom beyond (Q
@@ -727,7 +727,7 @@ TEST_CASE("point-wise status proofs: phantom by the kernel of B, genuine by Kraw
     const Surface_locus L = self ? self_intersection_locus(a, o) : intersection_locus(a, b, o);
     INFO("trial " << trial << ": " << L.note);
     // all eight by the subdivision (the first and third, (2,2) self-intersections with a triple point next to a
-    // split line or with two nearly equal tangents, since session 18)
+    // split line or with two nearly equal tangents, need the 3 x 3 cut around the known multiple point)
     REQUIRE(L.topology_method == "subdivision");
     const internal::Kernel_partner_system ks(L.equation.matrix, self);
     {  // M = B^t and its partial derivatives (central differences of the exact entries)
@@ -815,7 +815,7 @@ TEST_CASE("a node with almost tangent branches is certified: the box around it i
           "[surface][subdivision]") {
   // The fifth problem of seed 26 of the random sweep (a polynomial (3, 2) self-intersection, D of total degree 34)
   // has a node at (0.14305488397, 0.20962656848) whose branches meet at 0.035 rad (located independently: Newton's
-  // method on grad D from D's exact Taylor expansion, session 18). Split at fixed ratios, the box that finally
+  // method on grad D from D's exact Taylor expansion). Split at fixed ratios, the box that finally
   // proves the node has it 5e-8 from an edge, and in the next box the two branches are 1.8e-9 apart: no box down
   // to depth 30 separated them. Cut around the node (Subdivision_topology::cut_around), it is certified.
   const Patch a = sweep_patch(26, 4);
@@ -841,10 +841,10 @@ TEST_CASE("a node with almost tangent branches is certified: the box around it i
 TEST_CASE("two branches close together between two nodes are certified by the two-branch certificate",
           "[surface][subdivision][two_branch]") {
   // The fifth problem of seed 6 of the random sweep (a polynomial (3, 2) self-intersection, D of total degree 34):
-  // two nodes near (0.9382, 0.9376) and (0.8726, 0.8318) (located in session 19 from the boxes the subdivision
-  // could not resolve), joined by two branches that run close together along the whole stretch. Quadtree boxes had
-  // to be thinner than the gap all along it, and the subdivision spent its 20000 boxes; boxes that hold both branches
-  // are now resolved whole (internal/two_branch_box.h).
+  // two nodes near (0.9382, 0.9376) and (0.8726, 0.8318) (located by hand from the boxes a quadtree subdivision
+  // cannot resolve), joined by two branches that run close together along the whole stretch. Quadtree boxes would
+  // have to be thinner than the gap all along it, and spend the 20000 boxes; the two-branch certificate resolves the
+  // boxes that hold both branches whole (topology/internal/two_branch_box.h).
   Surface_intersection_options o;
   o.pinch_point_boxes = 0;
   o.max_total_degree_for_topology = 0;  // the subdivision only
@@ -953,20 +953,21 @@ void check_near_tangent_loop(int e) {
 
 TEST_CASE("two nearly tangent surfaces meet along a thin closed loop: certified by subdivision",
           "[surface][subdivision][valley][fold]") {
-  // 2^-24: beyond the loop's tips f is small and positive along the parabola (a valley of D); the subdivision spent
-  // its 20000 boxes there before session 21 (then CGAL's analysis took over, without the certified cells).
+  // 2^-24: beyond the loop's tips f is small and positive along the parabola (a valley of D); without the valley
+  // exclusion the subdivision spends its 20000 boxes there (and CGAL's analysis, if set, takes over, without the
+  // certified cells).
   check_near_tangent_loop(12);
-  // 2^-40 (a loop 2^-21 wide in t): its tips need the fold certificate (before session 22: a box near the tip
-  // (57/64, 0.578) was not resolved at depth 30, from 2^-32 on).
+  // 2^-40 (a loop 2^-21 wide in t): its tips need the fold certificate (without it, from 2^-32 on, a box near the
+  // tip (57/64, 0.578) is not resolved at depth 30).
   check_near_tangent_loop(20);
 }
 
 TEST_CASE("two nearly tangent surfaces: the statuses along the thin loop are proved, with partners in closed form",
           "[surface][lifting][valley]") {
   // The same surfaces with 2^-20 for 2^-24 (a loop of width 2^-11), the lifting on. The chained proof along the
-  // two-branch arcs needs spans far shorter than the traced ones: with four halvings 94.7 % of the points were
-  // proved (7627 of 8054), with eight 99.4 %. Every proved status is genuine (the partner (v, s) = (t, s(u)),
-  // s(u) = 2 sqrt(1 + u) - 2, lies in [0, 1]^2), and its proved box holds that partner.
+  // two-branch arcs needs spans far shorter than the traced ones: with four halvings 94.7 % of the points are
+  // proved (7627 of 8054, measured without the fold cells), with eight 99.4 %. Every proved status is genuine (the
+  // partner (v, s) = (t, s(u)), s(u) = 2 sqrt(1 + u) - 2, lies in [0, 1]^2), and its proved box holds that partner.
   const Patch phi = from_power({"u", "v", "0"}, 4, 2);
   const Patch psi = from_power({"u + (1/4)*u^2", "v", "(4*v - 1 - u - u^2)^2 - (1/1048576)*(1 - 4*(2*u - 1)^2)"}, 4, 2);
   Surface_intersection_options o;
@@ -1093,8 +1094,8 @@ TEST_CASE("teapot: edge lines outside the partner domain are phantom, those beyo
 }
 
 // A (2,2) polynomial patch whose column 2 (the side v = 1) is collapsed to (1, 2, 3): every pair of points of that
-// side is a double point, so D vanishes on the whole side. Before the side was taken out of D, CGAL's curve analysis
-// of D and the box line threw (the two share a component) and ended the program.
+// side is a double point, so D vanishes on the whole side. CGAL's curve analysis of such a D and the box line throws
+// (the two share a component), so the side is taken out of D (an edge line).
 TEST_CASE("self-intersection: a collapsed side is an edge line, the rest of the locus is certified", "[surface][edge]") {
   const std::vector<std::vector<Patch::Point>> net = {{{Q(-2), Q(4), Q(3)}, {Q(-3), Q(0), Q(4)}, {Q(1), Q(2), Q(3)}},
                                                       {{Q(-4), Q(4), Q(-5)}, {Q(2), Q(-1), Q(3)}, {Q(1), Q(2), Q(3)}},
@@ -1154,9 +1155,9 @@ TEST_CASE("self-intersection: the seam of a closed patch is a pair of edge lines
 
 // Diagonal neighbours of the teapot's quad mesh (rim 0 and body 5, rim 1 and body 4) touch at one vertex, where the
 // two sheets of the smooth surface are tangent: D = 0 has a cusp at that corner of the (u, t) box, tangent to a side
-// (resolved by the weighted blow-up, internal/corner_blowup.h). Independent facts: the contact is one exact common
-// corner point (boundary_contacts), and two sectors of different rings meet nowhere else, so no other traced point
-// may be genuine.
+// (resolved by the weighted blow-up, topology/internal/corner_blowup.h). Independent facts: the contact is one exact
+// common corner point (boundary_contacts), and two sectors of different rings meet nowhere else, so no other traced
+// point may be genuine.
 TEST_CASE("teapot: diagonal neighbours touching at a corner are certified, the corner a singular boundary point",
           "[surface][teapot][corner]") {
   const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
@@ -1282,7 +1283,8 @@ TEST_CASE("teapot spout: singular points inside a shared side and two-edge corne
 // every control point of 12 has y <= 0 and every one of 13 has y >= 0, so (convex hulls) their common points lie in
 // the plane y = 0. Next to the seams the two halves continue each other smoothly: beyond the seam the partner
 // equations nearly vanish, the kernel of B is nearly two-dimensional, and both the floating-point lifting (a kernel
-// ratio of 2.5e16) and the span proofs failed there (9 of 39 statuses not proved before session 26).
+// ratio of 2.5e16) and the span proofs fail there (9 of 39 statuses without the point-wise proofs next to seams,
+// doc/surface_intersection.md, 4b).
 TEST_CASE("teapot handle halves: every status next to the seams is proved, every lifted partner is finite",
           "[surface][teapot][seam]") {
   const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));

@@ -1,6 +1,6 @@
-// Certified topology of D = 0 by Bernstein subdivision (Curve_topology_by_subdivision.h). Expected topologies come
-// from curves known in closed form (circles, ellipses, lines, a loop of diameter 1e-4, curves through domain
-// corners); singular configurations must be reported as not certified, never guessed.
+// Certified topology of D = 0 by Bernstein subdivision (topology/Curve_topology_by_subdivision.h). Expected
+// topologies come from curves known in closed form (circles, ellipses, lines, a loop of diameter 1e-4, curves through
+// domain corners); singular configurations must be reported as not certified, never guessed.
 #include <catch2/catch.hpp>
 
 #include <bezoutian/topology/Curve_topology_by_subdivision.h>
@@ -569,7 +569,7 @@ TEST_CASE("subdivision: known multiple points on a split line, or with two nearl
 
   // x (y - 6x)(y - 6.3x) with x = 2u^2 - 1, y = 2v - 1: a triple point at (1/sqrt2, 1/2) whose tangents y = 6x and
   // y = 6.3x are about 0.006 rad apart in (u, v). grad D is small in the whole sector between them (|grad| ~ angle^2 there), so
-  // the gradient tests need tiny pieces along it: they now split the Bernstein grids of D_u and D_v (differences
+  // the gradient tests need tiny pieces along it: they split the Bernstein grids of D_u and D_v (differences
   // of a split grid of D lose the precision the piece needs), and the blow-up square may cover the whole box.
   // The line u = 1/sqrt2 and the parabolas 2v - 1 = 6 (2u^2 - 1), 2v - 1 = 6.3 (2u^2 - 1) each run from v = 0 to
   // v = 1 through the triple point: 6 arcs, 6 boundary points, one component.
@@ -627,8 +627,8 @@ TEST_CASE("subdivision: a loop of width 2^-13 and near misses 2^-44 and 2^-52 de
   const P2 w = 4 * v - 1 - u - u * u;
   // A near miss: D = 2^(2k) w^2 + 1 + u^2 >= 1 has no real zero, but its valley along w = 0 is 2^(-2k) of its
   // coefficients deep (two surfaces that pass close without meeting). Proved empty for k = 22 and 26; for 26 the
-  // valley bound needs its segment along the box's edge where the valley's floor leaves a box (before: 20000 boxes
-  // spent).
+  // valley bound needs its segment along the box's edge where the valley's floor leaves a box (without that cut the
+  // 20000 boxes are spent).
   for (int k : {22, 26}) {
     const P2 miss = CGAL::ipower(P2(2), 2 * k) * w * w + 1 + u * u;
     const auto r = subdivide_curve_in_box(miss, Parameter_box{});
@@ -655,7 +655,7 @@ TEST_CASE("subdivision: nodes whose branches cross at 1e-4 rad are certified", "
   // 2^-28 of |H|^2 and changes sign a few 1e-9 from it; next to a node the two branches are 9.2e-5 times the
   // distance to it apart. Needed: Krawczyk's Jacobian in mean-value form, a Krawczyk box larger than the critical
   // point's rounding uncertainty, cuts that keep the node inside its box, the two-branch fold test cut where the
-  // minimiser leaves the box, and the double-double retry (before: not certified from about 3e-3 rad on).
+  // minimiser leaves the box, and the double-double retry (without them: not certified from about 3e-3 rad on).
   CHECK(check_parabola_nodes(14).two_branch_boxes > 0);
 }
 
@@ -695,8 +695,8 @@ TEST_CASE("box edge lines: a curve or a point lies on a curve, decided exactly",
   CHECK(internal::lies_on(point(C(Q(1, 2))), point(C(Q(1, 2)))));
 }
 
-// Singular points at a corner of the domain, resolved by the weighted blow-up of internal/corner_blowup.h; expected
-// values from the closed forms (branches into the unit square and where they leave it).
+// Singular points at a corner of the domain, resolved by the weighted blow-up of topology/internal/corner_blowup.h;
+// expected values from the closed forms (branches into the unit square and where they leave it).
 namespace {
 const Curve_topology_vertex* vertex_at(const Curve_topology_in_box& t, double uu, double vv) {
   for (const auto& x : t.vertices)

@@ -417,9 +417,9 @@ TEST_CASE("normalization: v-content when the first coefficients share only a con
 }
 
 TEST_CASE("normalization: square-free part of the teapot body/body intersection", "[determinant][normalization]") {
-  // Teapot body patches 4 and 5 (teapot32.bpt) share a boundary curve. D(u,t) was the regression:
-  // the modular square-free part did not terminate. Checks by exact identities computed with CGAL:
-  // S | D, every irreducible factor of D/S divides S (so D | S^k), S has no repeated factor.
+  // Teapot body patches 4 and 5 (teapot32.bpt) share a boundary curve. D(u,t) is the regression case of
+  // doc/determinant.md, "A hard case": a modular square-free part that must terminate. Checks by exact identities
+  // computed with CGAL: S | D, every irreducible factor of D/S divides S (so D | S^k), S has no repeated factor.
   const auto doc = bezoutian::io::read_geometry_file(bezoutian_test::source_file("examples/data/teapot_body_handle.json"));
   REQUIRE(doc.patches.size() >= 2);
   const auto e = bezoutian::intersection_equation(doc.patches[0], doc.patches[1]);

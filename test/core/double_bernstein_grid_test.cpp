@@ -1,4 +1,4 @@
-// The double-precision Bernstein grid of the subdivision (internal/double_bernstein_grid.h) claims a proved
+// The double-precision Bernstein grid of the subdivision (topology/internal/double_bernstein_grid.h) claims a proved
 // radius: after any sequence of de Casteljau splits, every exact child coefficient lies in 2^e (m +- rho).
 // Checked against the same splits in exact rational arithmetic, on coefficients with a wide dynamic range.
 #include <bezoutian/topology/internal/double_bernstein_grid.h>

@@ -193,7 +193,7 @@ TEST_CASE("certification rejects corrupted bases", "[groebner]") {
   const std::vector<P2> F{t - s * s, t * t + s * s - 2};
   const auto B = modular_lex_groebner_basis(F);
   REQUIRE(check_lex_groebner_basis(F, B) == Groebner_check::certified);
-  // one coefficient changed: s^4 + s^2 - 2 -> s^4 + s^2 - 3 (F_2 no longer reduces to 0)
+  // one coefficient changed: s^4 + s^2 - 2 -> s^4 + s^2 - 3 (F_2 does not reduce to 0)
   auto bad = B;
   bad[0] = lex({{1, 0, 4}, {1, 0, 2}, {-3, 0, 0}});
   CHECK(check_lex_groebner_basis(F, bad) == Groebner_check::ideal_not_contained);

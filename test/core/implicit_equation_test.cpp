@@ -149,7 +149,8 @@ TEST_CASE("a rational (2,2) patch with two triple points of D: the topology of C
   CHECK(o.multiple_points.size() == 2);
   const auto r = subdivide_curve_in_box(e.square_free, Parameter_box{}, o);
   REQUIRE(r.certified);
-  // expected values: CGAL's analyse_curve_in_box of the same D (476 s, recorded in doc/benchmarks.md)
+  // expected values: CGAL's analyse_curve_in_box of the same D (476 s; its timings are in doc/benchmarks.md,
+  // "CGAL's analysis of the same D")
   const Curve_topology_in_box& t = r.topology;
   REQUIRE(t.number_of_singular_points() == 2);
   for (const auto& x : t.vertices)

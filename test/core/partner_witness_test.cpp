@@ -1,4 +1,4 @@
-// The geometric proofs used by the surface topology (internal/double_partner_witness.h): exclusion of regions
+// The geometric proofs used by the surface topology (lifting/double_partner_witness.h): exclusion of regions
 // without genuine points, and the two-partner witness of a node. Checked against facts known independently:
 // a graph z = f(u,v) cannot self-intersect; a constructed pair with a node in closed form; and, on random patches,
 // a numerical partner search written here (a grid plus Gauss-Newton on the patches' own evaluation), which must
@@ -145,8 +145,8 @@ TEST_CASE("the two-partner witness proves the node and nothing at regular points
 TEST_CASE("the two-partner witness with far partners (a stretched partner parameter)", "[surface][witness]") {
   // The node of the previous test with psi's first parameter stretched, s = sigma / c: the partners become
   // sigma = +-0.978 c. Newton on the 6 x 6 system stalls at the rounding level of sigma (steps ~ 1e-14 c), which
-  // the witness must accept (only its Krawczyk test decides); it refused every c >= 1000 before (a (3,3) rational
-  // benchmark pair had a node with a partner at v = -46 and was not certified).
+  // the witness must accept (only its Krawczyk test decides); a Newton stopping test not scaled by the largest
+  // unknown refuses every c >= 1000 (a (3,3) rational benchmark pair has a node with a partner at v = -46).
   const Patch phi = from_power({"u", "v", "0"}, 2, 2);
   const double tn = std::sqrt(0.5), un = tn + 0.25;
   const Parameter_box around{Q(un - 1e-3), Q(un + 1e-3), Q(tn - 1e-3), Q(tn + 1e-3)};
@@ -167,7 +167,7 @@ TEST_CASE("partners of a bi-degree (3,2) self-intersection: the folded patch's d
   // Phi(u,v) = ((u - 1/2)^2, v^2, (u - 1/2)(v - 1/3)) as a (3,2) patch (x degree-elevated in u). Phi(u, 1/3) =
   // Phi(1 - u, 1/3): the line v = 1/3 is a double curve. With P = (u, v + k), Q = (u + l, v) the partner of
   // (u, 1/3) is (l, k) = (1 - 2u, 0) and no other (k = -2/3 makes the z's differ). The equations have degree 3
-  // in l but 2 in k; a common formal degree 3 made the Sylvester resultant vanish and no partner was found.
+  // in l but 2 in k; a common formal degree 3 would make the Sylvester resultant vanish, and no partner be found.
   const auto phi = bezoutian_test::patch_from_power({"(u-1/2)^2", "v^2", "(u-1/2)*(v-1/3)"}, 3, 2);
   const bezoutian::internal::Partner_equations eq(phi);
   CHECK(eq.degree_bounds()[0] == 3);
@@ -298,8 +298,8 @@ TEST_CASE("outward-rounded double intervals enclose exact sums, differences and 
 // interval_horner (the hot loop of the exclusions) rounds to nearest and widens once at the end by an a-priori
 // bound (Lazy_horner). Checked against exact rational evaluation: at point arguments where massive cancellation
 // makes the exact value 0 ((x - a)^n expanded, a a double), and at the ends and inside of random intervals with
-// coefficients of mixed signs and magnitudes 2^-40 .. 2^40, nonnegative arguments (parameters in a domain) and,
-// since session 18, arguments of any sign (partner boxes reach below 0); the enclosures must also be narrow (a
+// coefficients of mixed signs and magnitudes 2^-40 .. 2^40, nonnegative arguments (parameters in a domain) and
+// arguments of any sign (partner boxes reach below 0); the enclosures must also be narrow (a
 // test that cannot fail would accept infinite ones).
 TEST_CASE("interval Horner with one rounding bound encloses exact values", "[surface][witness]") {
   using D = internal::Double_interval;
@@ -378,7 +378,7 @@ TEST_CASE("interval Horner with one rounding bound encloses exact values", "[sur
   CHECK(narrow[1] >= 1);
 }
 
-// The strip exclusion (internal/certified_lifting.h, exclude_strips: the phantom proof of spans whose partner
+// The strip exclusion (lifting/certified_lifting.h, exclude_strips: the phantom proof of spans whose partner
 // cannot be followed) on the folded patch (u - 3/10)^2, v^2, (u - 3/10)(v - 1/3)), whose double line v = 1/3 has the
 // partner Q = (3/5 - u, 1/3): genuine for u in [0, 3/5], phantom beyond (Q leaves through u = 0). A strip over a
 // genuine span must never be proved; strips over phantom spans are. Spans are given in runs (touching) and apart.
@@ -405,7 +405,7 @@ TEST_CASE("strip exclusion: never over genuine points of a closed-form double li
   CHECK(mixed[2]);
 }
 
-// The blown-up partner equations (internal/blown_up_partner_equations.h) are F = E(x; r d(m)) / r with
+// The blown-up partner equations (lifting/internal/blown_up_partner_equations.h) are F = E(x; r d(m)) / r with
 // d = (1, m) or (m, 1): checked against the partner equations E themselves (an independent evaluation of the
 // forms at P and Q) at points with r != 0, and their Jacobian against central differences.
 TEST_CASE("blown-up partner equations: E / r and its derivatives", "[surface][lifting]") {

@@ -199,7 +199,7 @@ TEST_CASE("irrational common points of space curves", "[curve_intersection][spac
   }
   CHECK(r.points[0].s < r.points[1].s);
   require_same_as_exact(seg, par);
-  // rational weights on both: t = s no longer, the exact strategies agree
+  // rational weights on both: t = s does not hold, the exact strategies agree
   const Curve3 rseg(std::vector<Curve3::Point>{{0, 0, 0}, {1, 0, 0}}, std::vector<Rational>{1, 3});
   const Curve3 rpar = Curve3::from_homogeneous({{1, Rational(0), Rational(1, 2), Rational(1, 2)},
                                                  {2, Rational(1), Rational(-3), Rational(-3)},

@@ -1,6 +1,7 @@
-// The two-branch and fold certificates (internal/two_branch_box.h, fold_box.h) on Bernstein grids of polynomials known
-// in closed form: the first must hold where D = 0 is two branches without a fold (D = D_y = 0) in the box, and fail
-// wherever there is one; the second must hold where there is exactly one fold (D_x != 0 there), and fail otherwise.
+// The two-branch and fold certificates (topology/internal/two_branch_box.h, fold_box.h) on Bernstein grids of
+// polynomials known in closed form: the first must hold where D = 0 is two branches without a fold (D = D_y = 0) in
+// the box, and fail wherever there is one; the second must hold where there is exactly one fold (D_x != 0 there), and
+// fail otherwise.
 #include <catch2/catch.hpp>
 
 #include <bezoutian/topology/internal/fold_box.h>

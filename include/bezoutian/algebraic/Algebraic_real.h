@@ -293,7 +293,7 @@ class Algebraic_real {
   /// Exact comparison: -1, 0 or +1 as *this <, ==, > other.
   /// Refines both intervals against each other's ends and by bisection;
   /// equality is decided by a gcd of the defining polynomials (certified
-  /// multi-modular gcd, internal/bernstein_descartes_gcd.h),
+  /// multi-modular gcd, algebraic/internal/bernstein_descartes_gcd.h),
   /// after which both numbers share the smaller defining polynomial.
   int compare(const Algebraic_real& other) const {
     if (rep_ == other.rep_) return 0;

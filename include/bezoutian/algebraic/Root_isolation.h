@@ -3,10 +3,10 @@
 //
 // Algorithm: square-free factorization f = c prod g_i^(m_i) (a modular
 // square-free certificate, else Yun's algorithm with certified multi-modular
-// gcds, internal/bernstein_descartes_gcd.h); for each factor, Descartes' rule of signs in the Bernstein
+// gcds, algebraic/internal/bernstein_descartes_gcd.h); for each factor, Descartes' rule of signs in the Bernstein
 // basis on [a,b] with exact integer de Casteljau subdivision and a proved
-// floating-point filter (internal/bernstein_descartes.h); rational roots are
-// made exact (internal/bernstein_descartes_support.h). See doc/algebraic_numbers.md.
+// floating-point filter (algebraic/bernstein_descartes.h); rational roots are
+// made exact (algebraic/internal/bernstein_descartes_support.h). See doc/algebraic_numbers.md.
 #ifndef BEZOUTIAN_ALGEBRAIC_ROOT_ISOLATION_H
 #define BEZOUTIAN_ALGEBRAIC_ROOT_ISOLATION_H
 

@@ -35,7 +35,7 @@ struct Double_interval {
   BEZOUTIAN_ALWAYS_INLINE static Double_interval widen(double a, double b) {
     // one ulp outwards covers one rounding to nearest. An end rounded to +-inf on the inside (a lower end +inf,
     // an upper end -inf: an overflow) stands for a finite exact value beyond DBL_MAX: it becomes +-DBL_MAX, so
-    // that the enclosure keeps the exact value (the old widen left +inf there).
+    // that the enclosure keeps the exact value.
     if (std::isnan(a) || std::isnan(b)) return {-HUGE_VAL, HUGE_VAL};
     const double M = std::numeric_limits<double>::max();
     return {a == HUGE_VAL ? M : next(a, false), b == -HUGE_VAL ? -M : next(b, true)};

@@ -2,8 +2,9 @@
 // expands to nothing and costs nothing). Two kinds of measurement, printed on standard error:
 //  - BEZOUTIAN_PROFILE_SCOPE("name"): calls and total wall time of the enclosing scope, summed over the whole run
 //    and printed once at exit ("name  calls  ms");
-//  - BEZOUTIAN_PROFILE_START; ... BEZOUTIAN_PROFILE_STEP("name"): the wall time of each step of one function since
-//    the previous step (or the start), printed as it happens ("name  ms").
+//  - BEZOUTIAN_PROFILE_START; ... BEZOUTIAN_PROFILE_STEP("name"): the wall time of each step of a computation since
+//    the previous step or the last start, printed as it happens ("name  ms"); the steps of one computation may lie
+//    in several functions (one timeline per thread).
 // Build with -DBEZOUTIAN_PROFILE, e.g. cmake -DCMAKE_CXX_FLAGS=-DBEZOUTIAN_PROFILE. Not thread-safe: meant for
 // single-threaded profiling runs only.
 #ifndef BEZOUTIAN_ARITHMETIC_PROFILING_H
@@ -35,9 +36,16 @@ struct Profile_scope_timer {
   }
 };
 
-/// Prints the time since the previous step of the same function.
-inline void profile_step(std::chrono::steady_clock::time_point& last, const char* name) {
+/// The time of the last step or start of this thread's timeline.
+inline std::chrono::steady_clock::time_point& profile_last_step() {
+  thread_local std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  return last;
+}
+
+/// Prints the time since the previous step (or start) of this thread's timeline.
+inline void profile_step(const char* name) {
   const auto now = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point& last = profile_last_step();
   std::fprintf(stderr, "%-28s %10.2f ms\n", name, std::chrono::duration<double, std::milli>(now - last).count());
   last = now;
 }
@@ -51,8 +59,8 @@ inline void profile_step(std::chrono::steady_clock::time_point& last, const char
   static ::bezoutian::internal::Profile_site BEZOUTIAN_PROFILE_CAT(bezoutian_profile_site_, __LINE__)(name); \
   ::bezoutian::internal::Profile_scope_timer BEZOUTIAN_PROFILE_CAT(bezoutian_profile_timer_, __LINE__)(      \
       BEZOUTIAN_PROFILE_CAT(bezoutian_profile_site_, __LINE__))
-#define BEZOUTIAN_PROFILE_START auto bezoutian_profile_last = std::chrono::steady_clock::now()
-#define BEZOUTIAN_PROFILE_STEP(name) ::bezoutian::internal::profile_step(bezoutian_profile_last, name)
+#define BEZOUTIAN_PROFILE_START (void)(::bezoutian::internal::profile_last_step() = std::chrono::steady_clock::now())
+#define BEZOUTIAN_PROFILE_STEP(name) ::bezoutian::internal::profile_step(name)
 #else
 #define BEZOUTIAN_PROFILE_SCOPE(name)
 #define BEZOUTIAN_PROFILE_START

@@ -5,6 +5,7 @@
 #ifndef BEZOUTIAN_ARRANGEMENT_ARR_RATIONAL_BEZIER_TRAITS_2_H
 #define BEZOUTIAN_ARRANGEMENT_ARR_RATIONAL_BEZIER_TRAITS_2_H
 
+#include <bezoutian/arithmetic/profiling.h>
 #include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/arithmetic/Error.h>
@@ -12,6 +13,8 @@
 #include <bezoutian/algebraic/Root_isolation.h>
 #include <bezoutian/arrangement/internal/arr_bezier_exact.h>
 #include <bezoutian/arrangement/internal/arr_bezier_parameter.h>
+#include <bezoutian/arrangement/Arr_bezier_point_2.h>
+#include <bezoutian/arrangement/Arr_bezier_x_monotone_curve_2.h>
 
 #include <CGAL/Interval_nt.h>
 
@@ -33,231 +36,12 @@
 
 namespace bezoutian {
 
-/// \brief A point of the arrangement: exact algebraic coordinates, plus the curves and parameters it is known
-/// to lie at. A point of a curve at an algebraic parameter t gets its exact coordinates (defining polynomial
-/// Res_t(X - x W, p), internal/arr_bezier_exact.h) only when a comparison cannot be decided by enclosures of
-/// X/W and Y/W on t's refined isolating interval (filters, exact interval arithmetic).
-class Arr_bezier_point_2 {
- public:
-  using Supporting = internal::Arr_bezier_supporting_curve;
-  using Parameter = internal::Arr_parameter;
-  using Origin = std::pair<std::shared_ptr<const Supporting>, Parameter>;
-
-  /// The origin (0,0).
-  Arr_bezier_point_2() : Arr_bezier_point_2(Rational(0), Rational(0)) {}
-  /// The rational point (x, y).
-  Arr_bezier_point_2(const Rational& x, const Rational& y) : rep_(std::make_shared<Rep>()) {
-    rep_->c[0] = Algebraic_real(x);
-    rep_->c[1] = Algebraic_real(y);
-    rep_->known[0] = rep_->known[1] = true;
-  }
-  /// The rational point with the exact values of the doubles x and y (e.g. grid landmarks).
-  Arr_bezier_point_2(double x, double y) : Arr_bezier_point_2(Rational(x), Rational(y)) {}
-  /// The point with the given exact coordinates.
-  Arr_bezier_point_2(const Algebraic_real& x, const Algebraic_real& y) : rep_(std::make_shared<Rep>()) {
-    rep_->c[0] = x;
-    rep_->c[1] = y;
-    rep_->known[0] = rep_->known[1] = true;
-  }
-  /// The point of a supporting curve at parameter t (exact coordinates computed on demand).
-  Arr_bezier_point_2(const std::shared_ptr<const Supporting>& s, const Parameter& t) : rep_(std::make_shared<Rep>()) {
-    rep_->origins.push_back({s, t});
-    if (t.is_rational())
-      for (int k = 0; k < 2; ++k) coordinate(k);
-  }
-
-  /// Exact coordinate k (0: x, 1: y), computed on first use.
-  const Algebraic_real& coordinate(int k) const {
-    Rep& r = *rep_;
-    if (!r.known[k]) {
-      BEZOUTIAN_ARR_TIME("exact coordinate");
-      const Origin& o = r.origins.front();
-      r.c[k] = internal::arr_value_at(o.first->num[k], o.first->den[k], o.second.exact());
-      r.known[k] = true;
-    }
-    return r.c[k];
-  }
-  const Algebraic_real& x() const { return coordinate(0); }
-  const Algebraic_real& y() const { return coordinate(1); }
-  bool is_rational() const {
-    return rep_->known[0] && rep_->known[1] && rep_->c[0].is_rational() && rep_->c[1].is_rational();
-  }
-
-  /// A closed rational interval containing coordinate k (from the exact number if known, else an enclosure of
-  /// the coordinate function on the parameter's isolating interval).
-  void enclose(int k, Rational& lo, Rational& hi) const {
-    Rep& r = *rep_;
-    for (;;) {
-      if (r.known[k]) {
-        lo = r.c[k].lower();
-        hi = r.c[k].upper();
-        return;
-      }
-      const Origin& o = r.origins.front();
-      if (internal::arr_enclose_quotient(o.first->num[k], o.first->den[k], o.second.lower(), o.second.upper(), lo, hi))
-        return;
-      internal::arr_refine(o.second);
-    }
-  }
-  /// A double interval containing coordinate k, computed once (false if none is available yet).
-  bool enclose_double(int k, double& lo, double& hi) const {
-    Rep& r = *rep_;
-    if (!r.dvalid[k]) {
-      if (r.known[k]) {
-        r.dlo[k] = CGAL::to_interval(r.c[k].lower()).first;
-        r.dhi[k] = CGAL::to_interval(r.c[k].upper()).second;
-      } else {
-        const Origin& o = r.origins.front();
-        if (!o.second.is_rational() && CGAL::to_double(o.second.upper() - o.second.lower()) > 1e-12)
-          o.second.refine_to_width(internal::arr_parameter_width());  // parameters lie in [0, 1]
-        if (!internal::arr_enclose_quotient_double(o.first->num[k], o.first->den[k], o.second.lower(), o.second.upper(),
-                                                   r.dlo[k], r.dhi[k]))
-          return false;
-      }
-      r.dvalid[k] = true;
-    }
-    lo = r.dlo[k];
-    hi = r.dhi[k];
-    return true;
-  }
-
-  /// Shrinks the enclosures.
-  void refine(int k) const {
-    Rep& r = *rep_;
-    if (r.known[k]) internal::arr_refine(r.c[k]);
-    else internal::arr_refine(r.origins.front().second);
-    r.dvalid[k] = false;
-  }
-
-  /// Double approximations (nearest doubles).
-  /// (From the double enclosure when it is already narrow, ~1e-9 relative; else from the exact coordinate.)
-  double approximate_x() const { return approximate(0); }
-  double approximate_y() const { return approximate(1); }
-  double approximate(int k) const {
-    double lo, hi;
-    if (enclose_double(k, lo, hi) && hi - lo <= 1e-9 * (std::abs(lo) + 1)) return 0.5 * (lo + hi);
-    return coordinate(k).to_double();
-  }
-  const std::vector<Origin>& origins() const { return rep_->origins; }
-  /// Records that the point lies on s at parameter t (the caller guarantees it).
-  void add_origin(const std::shared_ptr<const Supporting>& s, const Parameter& t) const {
-    for (const Origin& o : rep_->origins)
-      if (o.first == s && o.second.same_representation(t)) return;
-    rep_->origins.push_back({s, t});
-  }
-  bool is_same(const Arr_bezier_point_2& o) const { return rep_ == o.rep_; }
-
-  /// Exact sign of coordinate k of p minus that of q: enclosures first, exact numbers if they do not separate.
-  friend int compare_coordinate(const Arr_bezier_point_2& p, const Arr_bezier_point_2& q, int k) {
-    if (p.rep_ == q.rep_) return 0;
-    double a0, b0, c0, d0;
-    if (p.enclose_double(k, a0, b0) && q.enclose_double(k, c0, d0)) {
-      if (b0 < c0) return -1;
-      if (d0 < a0) return 1;
-    }
-    for (int round = 0; round < 3; ++round) {
-      Rational a, b, c, d;
-      p.enclose(k, a, b);
-      q.enclose(k, c, d);
-      if (b < c) return -1;
-      if (d < a) return 1;
-      if (a == b && c == d) return CGAL::compare(a, c);
-      p.refine(k);
-      q.refine(k);
-    }
-    return p.coordinate(k).compare(q.coordinate(k));
-  }
-
-  friend std::ostream& operator<<(std::ostream& os, const Arr_bezier_point_2& p) {
-    return os << "(" << p.approximate_x() << ", " << p.approximate_y() << ")";
-  }
-
- private:
-  static const Algebraic_real& zero() {  // shared: no allocation per point
-    static const Algebraic_real z(0);
-    return z;
-  }
-  struct Rep {
-    Algebraic_real c[2] = {zero(), zero()};
-    bool known[2] = {false, false};
-    double dlo[2], dhi[2];  // cached double enclosures
-    bool dvalid[2] = {false, false};
-    std::vector<Origin> origins;
-  };
-  std::shared_ptr<Rep> rep_;
-};
-
-/// \brief An x-monotone arc: the supporting curve restricted to a parameter range [t0, t1] (t0 < t1), with its
-/// end points. Vertical arcs (x constant) are y-monotone.
-class Arr_bezier_x_monotone_curve_2 {
- public:
-  using Supporting = internal::Arr_bezier_supporting_curve;
-  using Parameter = internal::Arr_parameter;
-  using Point_2 = Arr_bezier_point_2;
-  using Multiplicity = unsigned int;
-
-  Arr_bezier_x_monotone_curve_2() = default;
-  /// The arc of s on [t0, t1] with the given end points; `increasing` says whether x (y for vertical arcs)
-  /// increases with the parameter. The arc is directed like the parameter (source at t0);
-  /// Construct_opposite_2 flips the direction.
-  Arr_bezier_x_monotone_curve_2(std::shared_ptr<const Supporting> s, const Parameter& t0, const Parameter& t1,
-                                const Point_2& p0, const Point_2& p1, bool increasing)
-      : s_(std::move(s)), t0_(t0), t1_(t1), p0_(p0), p1_(p1), increasing_(increasing), directed_right_(increasing) {}
-
-  const std::shared_ptr<const Supporting>& supporting() const { return s_; }
-  const Rational_bezier_curve_2<Rational>& supporting_curve() const { return s_->curve; }
-  const Parameter& parameter_min() const { return t0_; }
-  const Parameter& parameter_max() const { return t1_; }
-  const Point_2& point_at_min_parameter() const { return p0_; }
-  const Point_2& point_at_max_parameter() const { return p1_; }
-  bool is_vertical() const { return s_->vertical; }
-  bool is_increasing() const { return increasing_; }
-  bool is_directed_right() const { return directed_right_; }
-  /// True if the direction is that of increasing parameter.
-  bool follows_parameter() const { return directed_right_ == increasing_; }
-  /// Lexicographically smallest / largest end.
-  const Point_2& left() const { return increasing_ ? p0_ : p1_; }
-  const Point_2& right() const { return increasing_ ? p1_ : p0_; }
-  const Point_2& source() const { return directed_right_ ? left() : right(); }
-  const Point_2& target() const { return directed_right_ ? right() : left(); }
-  Arr_bezier_x_monotone_curve_2 opposite() const {
-    Arr_bezier_x_monotone_curve_2 c = *this;
-    c.directed_right_ = !directed_right_;
-    return c;
-  }
-
-  /// A polyline through n+1 points of the arc (doubles, for drawing), from the min-parameter end.
-  std::vector<std::pair<double, double>> polyline(int n = 32) const {
-    std::vector<std::pair<double, double>> out;
-    const double a = t0_.to_double(), b = t1_.to_double();
-    out.push_back({p0_.approximate_x(), p0_.approximate_y()});
-    for (int i = 1; i < n; ++i) {
-      const auto q = s_->curve.evaluate(a + (b - a) * i / n);
-      out.push_back({q[0], q[1]});
-    }
-    out.push_back({p1_.approximate_x(), p1_.approximate_y()});
-    return out;
-  }
-
-  friend std::ostream& operator<<(std::ostream& os, const Arr_bezier_x_monotone_curve_2& c) {
-    return os << "[curve " << c.s_->id << " t in [" << c.t0_.to_double() << ", " << c.t1_.to_double() << "]: "
-              << c.p0_ << " -> " << c.p1_ << "]";
-  }
-
- private:
-  std::shared_ptr<const Supporting> s_;
-  Parameter t0_, t1_;
-  Point_2 p0_, p1_;
-  bool increasing_ = true;
-  bool directed_right_ = true;
-};
-
 /// \brief Model of CGAL's ArrangementTraits_2 (and ArrangementDirectionalXMonotoneTraits_2) for planar rational
 /// Bezier curves with exact rational control points and positive weights.
 ///
 /// Curve_2 is Rational_bezier_curve_2<Rational>. Points have exact algebraic coordinates (Algebraic_real):
 /// a point of curve C at an algebraic parameter t of defining polynomial p has x = X(t)/W(t) with defining
-/// polynomial Res_t(X - x W, p) (internal/arr_bezier_exact.h). Intersections come from intersect_curves
+/// polynomial Res_t(X - x W, p) (arrangement/internal/arr_bezier_exact.h). Intersections come from intersect_curves
 /// (certified, du-1989 ch. 4), cached per pair of supporting curves; the traits object and its copies share
 /// the cache. Objects are not thread-safe (shared lazily refined numbers).
 class Arr_rational_bezier_traits_2 {
@@ -297,7 +81,7 @@ class Arr_rational_bezier_traits_2 {
   /// the parameter on a. Computed once per unordered pair (both orientations are cached). Pairs whose piece
   /// boxes are disjoint, and curves proved simple (Arr_bezier_supporting_curve::simple), need no elimination.
   const Pair_entry& intersections(const std::shared_ptr<const Supporting>& a, const std::shared_ptr<const Supporting>& b) const {
-    BEZOUTIAN_ARR_TIME("intersections()");
+    BEZOUTIAN_PROFILE_SCOPE("intersections()");
     const auto key = std::make_pair(a->id, b->id);
     auto it = cache_->pairs.find(key);
     if (it != cache_->pairs.end()) return it->second;
@@ -311,13 +95,13 @@ class Arr_rational_bezier_traits_2 {
       }
       return cache_->pairs.emplace(key, std::move(e)).first->second;
     }
-    BEZOUTIAN_ARR_TIME("pair computed");
+    BEZOUTIAN_PROFILE_SCOPE("pair computed");
     // With positive weights each piece lies in the box of its control points (convex hull property).
     const bool disjoint = a != b && internal::arr_pieces_disjoint(*a, *b, 0, 0, 0);
     if (disjoint || (a == b && (a->linear || a->simple)))  // (an arc of a line segment has no self-intersection)
       return cache_->pairs.emplace(key, Pair_entry()).first->second;
     {  // interval subdivision and Krawczyk: exact parameters only on demand
-      BEZOUTIAN_ARR_TIME("interval solver");
+      BEZOUTIAN_PROFILE_SCOPE("interval solver");
       internal::Arr_interval_solver solver{*a, *b, {}};
       internal::Arr_self_interval_solver self_solver{*a, {}};
       if (a != b) solver.run(a->inet, 0, 1, b->inet, 0, 1, 0);
@@ -352,7 +136,7 @@ class Arr_rational_bezier_traits_2 {
     }
     Curve_intersection_result r;
     try {
-      BEZOUTIAN_ARR_TIME("intersect_curves/self");
+      BEZOUTIAN_PROFILE_SCOPE("intersect_curves/self");
       r = a == b ? self_intersections(a->curve) : intersect_curves(a->curve, b->curve);
     } catch (const Invalid_input&) {
       throw;
@@ -371,10 +155,10 @@ class Arr_rational_bezier_traits_2 {
 
   // ------------------------------------------------------------------------------------------- basic predicates
   static int cmp_x(const Point_2& p, const Point_2& q) {
-    BEZOUTIAN_ARR_TIME("Compare_x");
+    BEZOUTIAN_PROFILE_SCOPE("Compare_x");
     return compare_coordinate(p, q, 0); }
   static int cmp_xy(const Point_2& p, const Point_2& q) {
-    BEZOUTIAN_ARR_TIME("Compare_xy");
+    BEZOUTIAN_PROFILE_SCOPE("Compare_xy");
     if (p.is_same(q)) return 0;
     const int c = compare_coordinate(p, q, 0);
     return c != 0 ? c : compare_coordinate(p, q, 1);
@@ -404,7 +188,7 @@ class Arr_rational_bezier_traits_2 {
 
   /// Parameter of the arc at the point p (p on the arc, or at least x(p) in its x-range for non-vertical arcs).
   static Parameter parameter_of(const X_monotone_curve_2& c, const Point_2& p) {
-    BEZOUTIAN_ARR_TIME("parameter_of");
+    BEZOUTIAN_PROFILE_SCOPE("parameter_of");
     for (const auto& o : p.origins())
       if (o.first == c.supporting() && o.second >= c.parameter_min() && o.second <= c.parameter_max()) return o.second;
     if (cmp_xy(p, c.point_at_min_parameter()) == 0) return c.parameter_min();
@@ -503,7 +287,7 @@ class Arr_rational_bezier_traits_2 {
 
   /// Sign of y(p) - y(arc at x(p)) (p in the x-range of the non-vertical arc).
   static int compare_y_at_x(const Point_2& p, const X_monotone_curve_2& c) {
-    BEZOUTIAN_ARR_TIME("Compare_y_at_x_2");
+    BEZOUTIAN_PROFILE_SCOPE("Compare_y_at_x_2");
     if (c.is_vertical()) {
       if (compare_coordinate(p, c.left(), 1) < 0) return -1;
       return compare_coordinate(p, c.right(), 1) > 0 ? 1 : 0;
@@ -594,7 +378,7 @@ class Arr_rational_bezier_traits_2 {
   /// that the two arcs neither cross nor end on the open slab between x(p) and x*; comparing their exact
   /// ordinates at x* gives the answer (equal ordinates there mean an overlap, hence EQUAL).
   int compare_y_near(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, const Point_2& p, bool right) const {
-    BEZOUTIAN_ARR_TIME("Compare_y_at_x_l/r");
+    BEZOUTIAN_PROFILE_SCOPE("Compare_y_at_x_l/r");
     const int dir = right ? 1 : -1;
     // A vertical arc at p lies (lexicographically) just above p on the right side, just below it on the left.
     if (c1.is_vertical() || c2.is_vertical()) return (int(c1.is_vertical()) - int(c2.is_vertical())) * dir;
@@ -709,7 +493,7 @@ class Arr_rational_bezier_traits_2 {
    public:
     template <class OutputIterator>
     OutputIterator operator()(const Curve_2& c, OutputIterator oi) const {
-    BEZOUTIAN_ARR_TIME("Make_x_monotone_2");
+    BEZOUTIAN_PROFILE_SCOPE("Make_x_monotone_2");
       using Result = boost::variant<Point_2, X_monotone_curve_2>;
       // With positive weights the curve is a single point iff all control points coincide: an isolated point.
       bool point = true;
@@ -760,7 +544,7 @@ class Arr_rational_bezier_traits_2 {
   class Split_2 {
    public:
     void operator()(const X_monotone_curve_2& c, const Point_2& p, X_monotone_curve_2& c1, X_monotone_curve_2& c2) const {
-    BEZOUTIAN_ARR_TIME("Split_2");
+    BEZOUTIAN_PROFILE_SCOPE("Split_2");
       const Parameter t = parameter_of(c, p);
       X_monotone_curve_2 a = make_arc(c.supporting(), c.parameter_min(), t, c.point_at_min_parameter(), p);
       X_monotone_curve_2 b = make_arc(c.supporting(), t, c.parameter_max(), p, c.point_at_max_parameter());
@@ -782,7 +566,7 @@ class Arr_rational_bezier_traits_2 {
   /// interior of both arcs and 0 = unknown otherwise) and overlapping sub-arcs.
   template <class OutputIterator>
   OutputIterator intersect(const X_monotone_curve_2& c1, const X_monotone_curve_2& c2, OutputIterator oi) const {
-    BEZOUTIAN_ARR_TIME("Intersect_2");
+    BEZOUTIAN_PROFILE_SCOPE("Intersect_2");
     using Ip = std::pair<Point_2, Multiplicity>;
     using Result = boost::variant<Ip, X_monotone_curve_2>;
     std::vector<std::pair<Point_2, Result>> out;  // key: lexicographic position

@@ -195,7 +195,7 @@ inline std::vector<Lex_polynomial_2> lex_groebner_basis(const std::vector<Lex_po
 // ------------------------------------------------------------------------------------------------------------------
 // Multi-modular lexicographic basis, certified over Q.
 //
-// 1. For word primes p: the reduced lex basis of <F mod p> (dense Buchberger, internal/modular_groebner.h).
+// 1. For word primes p: the reduced lex basis of <F mod p> (dense Buchberger, elimination/internal/modular_groebner.h).
 // 2. Unlucky primes: a prime is discarded if it divides a leading coefficient of an input (its leading monomial
 //    would change), or if its basis is not zero-dimensional. The other primes are grouped by the leading monomials of
 //    their bases; Chinese remaindering and rational reconstruction (Wang) use the largest group (on a tie the group

@@ -154,13 +154,7 @@ inline int root_sign(const Algebraic_real& a, const Ci_poly1& F) {
     mpz_mul_2exp(p2.mpz(), p2.mpz(), (unsigned long)(round == 0 ? 64 : (32UL << round)));
     a.refine_to_width(w / Rational(p2));
   }
-#ifdef CI_DEBUG
-  std::cerr << "fallback deg " << F.degree() << " bits " << bits << " wexp " << wexp << " rootdeg " << a.polynomial().degree() << "\n";
-#endif
   const int ex = a.sign_of(F);
-#ifdef CI_DEBUG
-  std::cerr << "  exact " << ex << "\n";
-#endif
   return ex;
 }
 

@@ -24,475 +24,20 @@
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/internal/kernel_partner_proofs.h>
+#include <bezoutian/lifting/internal/partner_span_proofs.h>
 #include <bezoutian/lifting/partner_domain_crossings.h>
 #include <bezoutian/arithmetic/number_types.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <functional>
 #include <limits>
 #include <vector>
 
 namespace bezoutian {
 namespace internal {
-
-/// outside: the partner found is proved outside the partner domain, the exclusion of every other partner (which
-/// makes the span phantom) not yet tried (internal to certify_edge_partners: spans are excluded in runs).
-enum class Partner_status { genuine, phantom, undecided, outside };
-
-/// Bounds the number of exclusion tests (no_genuine_partner, up to 1024 partner pieces each) of one locus: the
-/// phantom proofs are the costly part; when the budget is spent the remaining spans stay undecided. Two separate
-/// counts: the exclusions next to a followed partner proved outside the domain (`left`: one per span at most,
-/// cheap and mostly successful), and the fallback that covers a span's whole strip when no partner could be
-/// followed (`fallback_left`: up to 16 tests per span, often failing). With one shared count the fallback on the
-/// first edges starved the cheap proofs of later ones. A third count bounds the genuine proofs by the blown-up
-/// equations near pinch points (about 0.2 ms each, most of them failing on random rational bicubics).
-struct Exclusion_budget {
-  std::size_t left = std::numeric_limits<std::size_t>::max();
-  std::size_t fallback_left = std::numeric_limits<std::size_t>::max();
-  bool take() { return take(left); }
-  bool take_fallback() { return take(fallback_left); }
-  /// Krawczyk tests of the blown-up equations near the trivial partner (blown_up_partner_equations.h); given up
-  /// when the first 2000 all fail.
-  std::size_t blown_up_left = 8000, blown_up_tried = 0, blown_up_proved = 0;
-  /// exclusion tests on the slabs of single points (the last resort of certify_edge_partners), per locus
-  std::size_t point_left = 4000;
-  bool take_blown_up() {
-    if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
-    if (!take(blown_up_left)) return false;
-    ++blown_up_tried;
-    return true;
-  }
-
- private:
-  static bool take(std::size_t& n) {
-    if (n == 0) return false;
-    --n;
-    return true;
-  }
-};
-
-/// Inverse of a 3 x 3 matrix of doubles by its adjugate (floating point: used for preconditioners and Newton
-/// steps, never for a decision); false if the determinant is zero or not finite.
-inline bool invert_3x3(const double (&A)[3][3], double (&C)[3][3]) {
-  const double det = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
-                     A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
-  if (!std::isfinite(det) || det == 0) return false;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-      C[r][c] = (A[r1][c1] * A[r2][c2] - A[r1][c2] * A[r2][c1]) / det;  // adjugate / det
-    }
-  return true;
-}
-
-/// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
-/// (0 or 1); T its span; W = (other coordinate, y1, y2). On success W is replaced by K (a tighter enclosure).
-/// (Eq: Partner_equations, or Blown_up_partner_equations with z = (x1, x2, r, m).)
-template <class Eq>
-inline bool parametric_partner_krawczyk(const Eq& eq, int axis, const Double_interval& T,
-                                        std::array<Double_interval, 3>& W, std::array<Double_interval, 3>* image = nullptr,
-                                        bool strict = false) {
-  using D = Double_interval;
-  const int q[3] = {1 - axis, 2, 3};
-  auto full = [&](const std::array<D, 3>& w, const D& t) {
-    std::array<D, 4> z;
-    z[axis] = t;
-    for (int c = 0; c < 3; ++c) z[q[c]] = w[c];
-    return z;
-  };
-  std::array<D, 3> m;
-  for (int c = 0; c < 3; ++c) m[c] = D{W[c].mid(), W[c].mid()};
-  // C: the inverse of the Jacobian at the centre (floating point; any C gives a valid test)
-  std::array<std::array<D, 4>, 3> Jc, J;
-  std::array<D, 3> E;
-  eq.evaluate(full(m, D{T.mid(), T.mid()}), E, &Jc);
-  double A[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) A[r][c] = Jc[r][q[c]].mid();
-  double C[3][3];
-  if (!invert_3x3(A, C)) return false;
-  // mean-value form in the parameter too (much tighter than E(T, m) in naive interval arithmetic):
-  // E(t, m) in E(t_m, m) + dE/dx_axis(T, W) (T - t_m) for t in T
-  std::array<D, 3> EW;
-  eq.evaluate(full(W, T), EW, &J);  // (the values over W are not needed, only the Jacobian)
-  const D tm{T.mid(), T.mid()};
-  eq.evaluate(full(m, tm), E);
-  const std::array<D, 2> w = eq.weights(full(W, T));
-  if (w[0].contains_zero() || w[1].contains_zero()) return false;  // E = 0 would not put (x, y) on D = 0
-  std::array<D, 3> K;
-  for (int r = 0; r < 3; ++r) {
-    D k = m[r], slope{0, 0};
-    for (int c = 0; c < 3; ++c) {
-      const D cr{C[r][c], C[r][c]};
-      k = k - cr * E[c];
-      slope = slope + cr * J[c][axis];
-      D g{r == c ? 1.0 : 0.0, r == c ? 1.0 : 0.0};
-      for (int l = 0; l < 3; ++l) g = g - D{C[r][l], C[r][l]} * J[l][q[c]];
-      k = k + g * (W[c] - m[c]);
-    }
-    k = k - slope * (T - tm);
-    if (!(std::isfinite(k.lo) && std::isfinite(k.hi))) return false;
-    K[r] = k;
-  }
-  if (image) *image = K;
-  for (int r = 0; r < 3; ++r)
-    if (strict ? !(W[r].lo < K[r].lo && K[r].hi < W[r].hi) : !(W[r].lo <= K[r].lo && K[r].hi <= W[r].hi)) return false;
-  W = K;
-  return true;
-}
-
-
-/// A box W = V x Y predicted to hold the zeros (v, y) of E(t, .) for t in T (floating point: Newton at the centre
-/// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled).
-/// False if Newton does not converge.
-template <class Eq>
-inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T,
-                                std::array<double, 3> w, std::array<Double_interval, 3>& W) {
-  using D = Double_interval;
-  const int q[3] = {1 - axis, 2, 3};
-  const double t = T.mid();
-  double A[3][3], b[3], step = 0;
-  for (int it = 0; it < 12; ++it) {
-    std::array<D, 4> z;
-    z[axis] = D{t, t};
-    for (int c = 0; c < 3; ++c) z[q[c]] = D{w[c], w[c]};
-    std::array<D, 3> E;
-    std::array<std::array<D, 4>, 3> J;
-    eq.evaluate(z, E, &J);
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
-      b[r] = it < 11 ? E[r].mid() : J[r][axis].mid();  // the last round solves for the tangent instead
-    }
-    double Ai[3][3], x[3];
-    if (!invert_3x3(A, Ai)) return false;
-    for (int r = 0; r < 3; ++r) x[r] = Ai[r][0] * b[0] + Ai[r][1] * b[1] + Ai[r][2] * b[2];
-    if (it < 11) {
-      step = std::fabs(x[0]) + std::fabs(x[1]) + std::fabs(x[2]);
-      for (int c = 0; c < 3; ++c) w[c] -= x[c];
-      if (!(step < 1)) return false;
-      continue;
-    }
-    if (!(step <= 1e-10 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2])))) return false;
-    const double h = 0.5 * (T.hi - T.lo);
-    for (int c = 0; c < 3; ++c) {
-      const double r = 2 * std::fabs(x[c]) * h + 4 * h * h + 1e-13 * (1 + std::fabs(w[c]));
-      W[c] = D{w[c] - r, w[c] + r};
-    }
-  }
-  return true;
-}
-
-/// Krawczyk's test with strict inclusion over the span T, with epsilon-inflation from the box W (updated to the
-/// box that passed, in which the zero curve gamma(t), t in T, is unique); K receives the operator's image, which
-/// encloses gamma(T).
-template <class Eq>
-inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
-                             std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K) {
-  using D = Double_interval;
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    std::array<D, 3> image, trial = W;
-    if (parametric_partner_krawczyk(eq, axis, T, trial, &image, true)) {
-      K = trial;
-      return true;
-    }
-    if (!(std::isfinite(image[0].lo) && std::isfinite(image[0].hi))) return false;
-    // epsilon-inflation: retry on the hull of W and the operator's image, widened
-    for (int c = 0; c < 3; ++c) {
-      const double lo = std::min(W[c].lo, image[c].lo), hi = std::max(W[c].hi, image[c].hi), r = 0.1 * (hi - lo) + 1e-15;
-      W[c] = D{lo - r, hi + r};
-    }
-  }
-  return false;
-}
-
-/// The anchor of a zero curve proved unique in W over the span T (prove_zero_curve): Krawczyk's test at the single
-/// value t* = mid T encloses gamma(t*) strictly inside the cell's range of the other coordinate, where the line
-/// through t* meets D = 0 only at the arc point; so gamma(t*) is the arc point (classify_partner_span, step 2).
-template <class Eq>
-inline bool zero_curve_anchored(const Eq& eq, int axis, const Double_interval& T, const std::array<Double_interval, 3>& W,
-                                const Parameter_box& cell) {
-  std::array<Double_interval, 3> at = W;
-  const Double_interval t{T.mid(), T.mid()};
-  if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return false;
-  const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-  return Rational(at[0].lo) > lo && Rational(at[0].hi) < hi;
-}
-
-/// The status given by a partner enclosure K_y of the arc points over T whose other coordinate lies in K_v
-/// (proved): genuine if P, Q are in the partner domain over all of K; phantom if they are outside and no point of
-/// T x K_v has any partner in the domain; otherwise undecided.
-inline Partner_status status_from_partner(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
-                                          int axis, const Double_interval& T, const std::array<Double_interval, 3>& K,
-                                          const std::vector<std::array<Double_interval, 2>>* start,
-                                          bool defer_exclusion = false, Exclusion_budget* budget = nullptr) {
-  using D = Double_interval;
-  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
-    return Partner_status::undecided;  // the trivial partner y = 0 is not a partner
-  const D& X1 = axis == 0 ? T : K[0];
-  const D& X2 = axis == 0 ? K[0] : T;
-  std::array<D, 2> P, Q;
-  eq.points(std::array<D, 4>{X1, X2, K[1], K[2]}, P, Q);
-  if (unbounded ||
-      (interval_inside(P[0], domain.u0, domain.u1) && interval_inside(P[1], domain.v0, domain.v1) &&
-       interval_inside(Q[0], domain.u0, domain.u1) && interval_inside(Q[1], domain.v0, domain.v1)))
-    return Partner_status::genuine;
-  const bool outside = interval_disjoint(P[0], domain.u0, domain.u1) || interval_disjoint(P[1], domain.v0, domain.v1) ||
-                       interval_disjoint(Q[0], domain.u0, domain.u1) || interval_disjoint(Q[1], domain.v0, domain.v1);
-  if (!outside) return Partner_status::undecided;  // the partner crosses the domain boundary over T
-  if (defer_exclusion) return Partner_status::outside;
-  const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
-  if (budget && !budget->take()) return Partner_status::undecided;
-  return no_genuine_partner(eq, box, domain, 1024, start) ? Partner_status::phantom : Partner_status::undecided;
-}
-
-/// Status of every arc point over the span T of a graph piece (see the header comment), starting from a box
-/// W0 = V x Y predicted to hold the arc and its partner there; `cell` is the piece's cell and `axis` its graph
-/// coordinate. Proof of the genuine case, in three steps:
-///  1. Krawczyk's test with strict inclusion K ⊂ int W for the whole span: for every t in T, E(t, .) has exactly
-///     one zero gamma(t) in W, and dE/dw is regular on W, so gamma is continuous (implicit functions);
-///  2. an anchor: Krawczyk's test at the single value t* = mid T encloses gamma(t*) strictly inside the cell,
-///     where the line through t* meets D = 0 only at the arc point: gamma(t*) is the arc point with a partner;
-///  3. continuity: the arc points over T (a connected set, inside the cell, touching the cell's edges only at
-///     its end points) and gamma agree at t*, and wherever they agree gamma is inside the cell nearby (except
-///     at the arc's end), so they agree on all of T: every arc point over T has the partner gamma_y(t) in K_y.
-/// V may therefore leave the cell (arcs entering the cell through an edge parallel to the graph axis).
-/// Genuine if P and Q lie in the partner domain over all of K. Phantom if the partner found is outside and no
-/// point of T x K_v (which holds the arc points over T) has any partner in the domain (no_genuine_partner,
-/// started from `start()`: partner pieces covering every candidate partner of the cell's points, or null).
-/// Undecided if no partner can be followed (then the caller may try exclude_strips on runs of such spans).
-inline Partner_status classify_partner_span(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
-                                            int axis, const Double_interval& T, const std::array<Double_interval, 3>& W0,
-                                            const Parameter_box& cell,
-                                            const std::function<const std::vector<std::array<Double_interval, 2>>*()>& start,
-                                            std::array<Double_interval, 2>* partner = nullptr, bool defer_exclusion = false,
-                                            std::array<Double_interval, 3>* enclosure = nullptr,
-                                            Exclusion_budget* budget = nullptr) {
-  using D = Double_interval;
-  const Partner_status no_partner = Partner_status::undecided;  // (the caller may try exclude_strips)
-  std::array<D, 3> W = W0, K;
-  const bool proved = prove_zero_curve(eq, axis, T, W, K);
-  if (!proved) return no_partner;
-  if (!zero_curve_anchored(eq, axis, T, W, cell)) return no_partner;
-  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero())
-    return no_partner;  // the trivial partner y = 0 is not a partner
-  if (partner) *partner = {K[1], K[2]};
-  if (enclosure) *enclosure = K;
-  const Partner_status st = status_from_partner(eq, domain, unbounded, axis, T, K, nullptr, true);
-  if (st != Partner_status::outside || defer_exclusion) return st;
-  return status_from_partner(eq, domain, unbounded, axis, T, K, start(), false, budget);
-}
-
-/// Genuine status of the arc points over the span T of a graph piece of a self-intersection where the followed
-/// partner is close to the trivial one (near a pinch point), by the blown-up equations F = E / r
-/// (blown_up_partner_equations.h; `bu` in the chart of the partner's larger coordinate). The proof is that of
-/// classify_partner_span with F for E: Krawczyk over T (strict) gives a unique continuous zero curve
-/// (v, r, m)(t) in W; the anchor at the middle of T puts it strictly inside the cell; a box for r that excludes 0
-/// makes y = r d(m) a nontrivial partner (E = r F = 0, weights nonzero), so the zero is the arc point over t with a
-/// partner; genuine if P and Q lie in the domain over the whole enclosure. `y0`, `y1`: the floating-point partners
-/// at the span's ends (either order), `V` a box for the other coordinate over T. Returns genuine (with the partner
-/// enclosure and K = (other coordinate, partner) in `partner`, `enclosure`, and the box (other coordinate, r, m)
-/// in `blown_up_box`) or undecided; never phantom.
-inline Partner_status classify_span_near_trivial_partner(const Blown_up_partner_equations& bu,
-                                                         const Parameter_box& domain, int axis,
-                                                         const Double_interval& T, const Double_interval& V,
-                                                         const std::array<double, 2>& y0, const std::array<double, 2>& y1,
-                                                         const Parameter_box& cell, std::array<Double_interval, 2>* partner,
-                                                         std::array<Double_interval, 3>* enclosure,
-                                                         std::array<Double_interval, 3>* blown_up_box = nullptr) {
-  using D = Double_interval;
-  const int big = bu.chart() == 0 ? 0 : 1;  // r is the partner's coordinate big, m = the other / r
-  if (y0[big] == 0 || y1[big] == 0 || (y0[big] > 0) != (y1[big] > 0)) return Partner_status::undecided;
-  const double r0 = y0[big], r1 = y1[big], m0 = y0[1 - big] / r0, m1 = y1[1 - big] / r1;
-  const double rr = 0.5 * std::fabs(r1 - r0) + 0.25 * std::fabs(r0 + r1) * 0.1, mr = 0.5 * std::fabs(m1 - m0) + 0.05;
-  std::array<D, 3> W{V, D{std::min(r0, r1) - rr, std::max(r0, r1) + rr}, D{std::min(m0, m1) - mr, std::max(m0, m1) + mr}}, P, K;
-  if (predict_partner_box(bu, axis, T, {W[0].mid(), 0.5 * (r0 + r1), 0.5 * (m0 + m1)}, P)) W = P;
-  if (!prove_zero_curve(bu, axis, T, W, K)) return Partner_status::undecided;
-  if (!zero_curve_anchored(bu, axis, T, W, cell)) return Partner_status::undecided;
-  if (K[1].contains_zero()) return Partner_status::undecided;  // r = 0: possibly the trivial partner
-  const D& X1 = axis == 0 ? T : K[0];
-  const D& X2 = axis == 0 ? K[0] : T;
-  const std::array<D, 4> z{X1, X2, K[1], K[2]};
-  std::array<D, 2> Pp, Qp;
-  bu.points(z, Pp, Qp);
-  if (!(interval_inside(Pp[0], domain.u0, domain.u1) && interval_inside(Pp[1], domain.v0, domain.v1) &&
-        interval_inside(Qp[0], domain.u0, domain.u1) && interval_inside(Qp[1], domain.v0, domain.v1)))
-    return Partner_status::undecided;
-  const std::array<D, 2> y = bu.partner(z);
-  if (partner) *partner = y;
-  if (enclosure) *enclosure = {K[0], y[0], y[1]};
-  if (blown_up_box) *blown_up_box = K;  // (other coordinate, r, m): the zero curve is unique in it over T
-  return Partner_status::genuine;
-}
-
-/// Status of the arc points over a span T that ends at a certified split point (partner_domain_crossings.h) whose
-/// graph interval lies in T. There the followed partner is on the domain's boundary, so its enclosure K straddles
-/// the boundary line and classify_partner_span cannot decide. Instead:
-///  1. Krawczyk over T (strict) and the anchor identify the zero curve gamma(t) = (v(t), y(t)), unique in W, with
-///     the arc and its partner (as in classify_partner_span). The split's solution lies in W, so gamma(x*) is it:
-///     G(x*) = bound, with G(t) the side's coordinate along gamma (g is linear in z) and x* the split's abscissa.
-///  2. dG/dt = g_t + g_w gamma'(t), gamma' = -(dE/dw)^-1 dE/dt, is enclosed over T x K (Cramer's rule in interval
-///     arithmetic on the preconditioned system). If it has a sign, G - bound has the sign of dG/dt (t - x*) on T:
-///     the followed partner is on a known side of the line for every t of T but x*.
-///  3. Inside: genuine if the other coordinates of P and Q lie inside over K. Outside: phantom if no arc point over
-///     T has another partner in the domain. Another partner y' of an arc point (t, v(t)), v(t) in K_v, lies outside
-///     W_y (uniqueness in W), so no_genuine_partner on T x K_v starts from four boxes covering the complement of
-///     W_y's interior.
-/// The status holds for the arc points over T beyond the split box's graph interval (`split_at_low_end`: the split
-/// is at T's low end); the few points inside that interval (width about 1e-15) are not claimed.
-inline Partner_status classify_span_at_split(const Partner_equations& eq, const Parameter_box& domain, int axis,
-                                             const Double_interval& T, const std::array<Double_interval, 3>& W0,
-                                             const Parameter_box& cell, const Partner_domain_crossing& split,
-                                             bool split_at_low_end, Exclusion_budget* budget,
-                                             std::array<Double_interval, 2>* partner,
-                                             std::array<Double_interval, 3>* enclosure) {
-  using D = Double_interval;
-  const Partner_status no = Partner_status::undecided;
-  const int q[3] = {1 - axis, 2, 3};
-  if (!(T.lo <= split.box[axis].lo && split.box[axis].hi <= T.hi)) return no;
-  std::array<D, 3> W = W0, K;
-  if (!prove_zero_curve(eq, axis, T, W, K)) return no;
-  if (!zero_curve_anchored(eq, axis, T, W, cell)) return no;
-  for (int c = 0; c < 3; ++c)
-    if (!(W[c].lo <= split.box[q[c]].lo && split.box[q[c]].hi <= W[c].hi)) return no;
-  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return no;
-  // 2. the sign of dG/dt over T x K
-  std::array<D, 4> z;
-  z[axis] = T;
-  for (int c = 0; c < 3; ++c) z[q[c]] = K[c];
-  std::array<D, 3> E;
-  std::array<std::array<D, 4>, 3> J;
-  eq.evaluate(z, E, &J);
-  double A[3][3], C[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
-  if (!invert_3x3(A, C)) return no;
-  std::array<std::array<D, 3>, 3> M;  // C dE/dw, close to the identity
-  std::array<D, 3> rhs;               // C dE/dt
-  for (int r = 0; r < 3; ++r) {
-    rhs[r] = D{0, 0};
-    for (int l = 0; l < 3; ++l) rhs[r] = rhs[r] + D{C[r][l], C[r][l]} * J[l][axis];
-    for (int c = 0; c < 3; ++c) {
-      M[r][c] = D{0, 0};
-      for (int l = 0; l < 3; ++l) M[r][c] = M[r][c] + D{C[r][l], C[r][l]} * J[l][q[c]];
-    }
-  }
-  auto det3 = [](const std::array<std::array<D, 3>, 3>& a) {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  };
-  const D det = det3(M);
-  if (det.contains_zero()) return no;
-  const D inverse_det = D::widen(1 / det.hi, 1 / det.lo);  // 1/x decreases on an interval without 0
-  const Partner_domain_side& side = split.side;
-  auto grad = [&](int i) {
-    const double d = side.point == 0 ? eq.dP(side.coordinate, i) : eq.dQ(side.coordinate, i);
-    return D{d, d};
-  };
-  D dG = grad(axis);
-  for (int c = 0; c < 3; ++c) {
-    std::array<std::array<D, 3>, 3> Mc = M;
-    for (int r = 0; r < 3; ++r) Mc[r][c] = rhs[r];
-    dG = dG - grad(q[c]) * (det3(Mc) * inverse_det);  // gamma'_c = -det(M_c) / det(M)
-  }
-  if (dG.contains_zero() || !std::isfinite(dG.lo) || !std::isfinite(dG.hi)) return no;
-  const int far_sign = (dG.lo > 0 ? 1 : -1) * (split_at_low_end ? 1 : -1);  // sign of G - bound beyond the split
-  const bool lower = side.bound == (side.coordinate == 0 ? domain.u0 : domain.v0);
-  const bool inside_far = lower ? far_sign > 0 : far_sign < 0;
-  std::array<D, 2> P, Q;
-  eq.points(z, P, Q);
-  if (inside_far) {
-    for (int point = 0; point < 2; ++point)
-      for (int coordinate = 0; coordinate < 2; ++coordinate) {
-        if (point == side.point && coordinate == side.coordinate) continue;
-        const D& x = point == 0 ? P[coordinate] : Q[coordinate];
-        if (!(coordinate == 0 ? interval_inside(x, domain.u0, domain.u1) : interval_inside(x, domain.v0, domain.v1)))
-          return no;
-      }
-    if (partner) *partner = {K[1], K[2]};
-    if (enclosure) *enclosure = K;
-    return Partner_status::genuine;
-  }
-  // Exclusion on thin boxes: over a piece T_j of T the arc points lie in T_j x K_j,v (Krawczyk's image on T_j
-  // inside W), and the partners of points of such a thin box sweep a region of width ~ |T_j| around the followed
-  // one, which the complement of W_y avoids once T_j is short enough. Pieces that fail are halved (three times).
-  const double big = std::numeric_limits<double>::max();
-  const D all{-big, big};
-  const std::vector<std::array<D, 2>> complement{{D{-big, W[1].lo}, all}, {D{W[1].hi, big}, all},
-                                                 {W[1], D{-big, W[2].lo}}, {W[1], D{W[2].hi, big}}};
-  struct Piece {
-    D T;
-    int depth;
-  };
-  std::vector<Piece> pieces;
-  const int initial = 4;
-  for (int j = initial; j-- > 0;)
-    pieces.push_back({D{T.lo + (T.hi - T.lo) * j / initial, j + 1 == initial ? T.hi : T.lo + (T.hi - T.lo) * (j + 1) / initial}, 0});
-  while (!pieces.empty()) {
-    const Piece pc = pieces.back();
-    pieces.pop_back();
-    std::array<D, 3> Wj = W;  // (non-strict: the zero over T_j is the one unique in W, so it lies in the image)
-    bool excluded = parametric_partner_krawczyk(eq, axis, pc.T, Wj);
-    if (excluded) {
-      if (budget && !budget->take()) return no;
-      const D& X1 = axis == 0 ? pc.T : Wj[0];
-      const D& X2 = axis == 0 ? Wj[0] : pc.T;
-      const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
-      excluded = no_genuine_partner(eq, box, domain, 1024, &complement);
-    }
-    if (excluded) continue;
-    if (pc.depth >= 3) return no;
-    const double mid = pc.T.mid();
-    pieces.push_back({D{mid, pc.T.hi}, pc.depth + 1});
-    pieces.push_back({D{pc.T.lo, mid}, pc.depth + 1});
-  }
-  if (enclosure) *enclosure = K;
-  return Partner_status::phantom;
-}
-
-/// A tight enclosure of the partner at one value t of the graph coordinate. K is a box in which the zero curve is
-/// unique for each t of `span` (a strict parametric Krawczyk test); a Krawczyk test with t fixed, on a
-/// small box around `guess` (other coordinate, y1, y2) inside K, encloses the same zero tightly. Returns `y`
-/// (the span's enclosure) if it fails.
-template <class Eq>
-inline std::array<Double_interval, 2> tight_partner_enclosure(const Eq& eq, int axis,
-                                                              const Double_interval& t, const Double_interval& span,
-                                                              const double (&guess)[3],
-                                                              const std::array<Double_interval, 3>& K,
-                                                              const std::array<Double_interval, 2>& y) {
-  using D = Double_interval;
-  if (!(span.lo <= t.lo && t.hi <= span.hi)) return y;  // uniqueness in K holds over the span only
-  std::array<double, 3> start{guess[0], guess[1], guess[2]};
-  if (!(std::isfinite(guess[1]) && std::isfinite(guess[2]))) {  // no partner guess: Newton from K's centre
-    std::array<D, 3> P;
-    if (predict_partner_box(eq, axis, t, {std::isfinite(guess[0]) ? guess[0] : K[0].mid(), K[1].mid(), K[2].mid()}, P))
-      for (int c = 0; c < 3; ++c) start[c] = P[c].mid();
-  }
-  std::array<D, 3> W;
-  bool near = true;
-  for (int c = 0; c < 3 && near; ++c) {
-    const double g = std::isfinite(start[c]) ? start[c] : K[c].mid();
-    const double r = 1e-8 * (1 + std::fabs(g)) + (t.hi - t.lo);
-    W[c] = D{std::max(g - r, K[c].lo), std::min(g + r, K[c].hi)};
-    near = W[c].lo < W[c].hi;
-  }
-  if (near && parametric_partner_krawczyk(eq, axis, t, W, nullptr, true)) return {W[1], W[2]};
-  // no usable guess (e.g. the floating-point lifting followed another partner): contract K itself. Each success
-  // replaces W by its Krawczyk image, which holds the zero; the last image is kept.
-  W = K;
-  bool any = false;
-  for (int it = 0; it < 12; ++it) {
-    std::array<D, 3> next = W;
-    if (!parametric_partner_krawczyk(eq, axis, t, next, nullptr, true)) break;
-    any = true;
-    const bool shrinking = (next[1].hi - next[1].lo) + (next[2].hi - next[2].lo) < 0.5 * ((W[1].hi - W[1].lo) + (W[2].hi - W[2].lo));
-    W = next;
-    if (!shrinking) break;
-  }
-  if (!any) return y;
-  return {D{std::max(W[1].lo, y[0].lo), std::min(W[1].hi, y[0].hi)}, D{std::max(W[2].lo, y[1].lo), std::min(W[2].hi, y[1].hi)}};
-}
 
 /// Result of certify_edge_partners: status per polyline point and the undecided fraction of the edge.
 struct Edge_partner_certificate {
@@ -650,87 +195,31 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
                                   const std::vector<bool>& float_genuine, Exclusion_budget& budget,
                                   Edge_partner_certificate& out);
 
-/// Certifies the genuine / phantom status along an edge of a subdivision topology: for each graph piece, the
-/// spans between consecutive polyline points (halved up to `max_halvings` times while undecided) are classified
-/// by classify_partner_span; `partner[i]` is the floating-point partner of polyline point i (the first guess),
-/// `float_genuine[i]` its floating-point status (the costly exclusion fallback is tried only near phantom points).
-/// Half-branches inside singular boxes (graph_axis -1) are chained from their crossing (certify_half_branch).
-inline Edge_partner_certificate certify_edge_partners(const Partner_equations& eq, const Parameter_box& domain,
-                                                      bool unbounded, const Curve_topology_edge& e,
-                                                      const std::vector<std::array<double, 2>>& partner,
-                                                      const std::vector<bool>& partner_known,
-                                                      const std::vector<bool>& float_genuine, Exclusion_budget& budget,
-                                                      int max_halvings = 6,
-                                                      const std::vector<const Partner_domain_crossing*>& splits = {},
-                                                      const std::vector<Blown_up_partner_equations>* blown_up = nullptr,
-                                                      const Kernel_partner_system* kernel = nullptr) {
+/// The state the three phases of certify_edge_partners share on one graph piece (graph_axis 0 or 1) of an edge:
+/// its inputs, the certificate being filled, the edge's total and undecided lengths, and the partner cover of the
+/// cell. The phases run in order: prove_spans, exclude_undecided_strips, prove_points.
+class Graph_piece_certifier {
+ public:
   using D = Double_interval;
-  Edge_partner_certificate out;
-  const std::size_t n = e.polyline.size();
-  out.point_status.assign(n, Partner_status::undecided);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::array<D, 2> none{D{nan, nan}, D{nan, nan}};
-  out.partner_enclosure.assign(n, none);
-  double total = 0, undecided = 0;
-  auto merge = [&](std::size_t i, Partner_status s, const std::array<D, 2>& y) {
-    if (s == Partner_status::undecided) return;
-    out.point_status[i] = s;
-    if (s == Partner_status::genuine) out.partner_enclosure[i] = y;
-  };
-  for (const Curve_topology_piece& pc : e.pieces) {
-    if (pc.last >= n || pc.first >= pc.last) continue;
-    if (pc.graph_axis < 0) {  // a half-branch inside a singular point's box
-      const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
-                         std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
-      total += len;
-      undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known,
-                                                   float_genuine, budget, out);
-      continue;
-    }
-    const int axis = pc.graph_axis;
-    const int other = 1 - axis;
-    // the graph coordinate and the other one at polyline point i, as intervals (end points: node enclosures)
-    auto coord = [&](std::size_t i, int c) {
-      if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
-      if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
-      if (i < splits.size() && splits[i]) return splits[i]->box[c];  // a certified split point: its proved box
-      return D{e.polyline[i][c], e.polyline[i][c]};
-    };
-    // The enclosure y of a genuine partner holds over the whole span (K: the span's box, where the zero curve is
-    // unique for each value of the graph coordinate). At the polyline point itself a Krawczyk test with the graph
-    // coordinate fixed, on a small box around the floating-point values inside K, encloses the same zero tightly;
-    // if it fails the span's enclosure is kept.
-    auto tight = [&](std::size_t i, Partner_status st, const std::array<D, 2>& y, const std::array<D, 3>& K,
-                     const D& span, int chart, const std::array<D, 3>& B) {
-      if (st != Partner_status::genuine) return y;
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      if (chart >= 0) {  // proved by the blown-up equations: the same test in (other coordinate, r, m), y = r d(m)
-        const int big = chart == 0 ? 0 : 1;
-        const bool k = partner_known[i] && partner[i][big] != 0;
-        const double guess[3] = {e.polyline[i][other], k ? partner[i][big] : nan, k ? partner[i][1 - big] / partner[i][big] : nan};
-        const std::array<D, 2> rm =
-            tight_partner_enclosure((*blown_up)[std::size_t(chart)], axis, coord(i, axis), span, guess, B, {B[1], B[2]});
-        const D rmm = rm[0] * rm[1];
-        const std::array<D, 2> t = chart == 0 ? std::array<D, 2>{rm[0], rmm} : std::array<D, 2>{rmm, rm[0]};
-        return std::array<D, 2>{D{std::max(t[0].lo, y[0].lo), std::min(t[0].hi, y[0].hi)},
-                                D{std::max(t[1].lo, y[1].lo), std::min(t[1].hi, y[1].hi)}};
-      }
-      const double guess[3] = {e.polyline[i][other], partner_known[i] ? partner[i][0] : nan,
-                               partner_known[i] ? partner[i][1] : nan};
-      return tight_partner_enclosure(eq, axis, coord(i, axis), span, guess, K, y);
-    };
-    // The partner pieces that survive the exclusion on the whole cell cover every candidate partner of its points:
-    // the phantom proofs of the spans start from them (computed once, on first demand). If the whole cell is
-    // excluded, start() returns an empty cover and every phantom proof is immediate.
-    bool computed = false, cell_failed = false;
-    std::vector<std::array<D, 2>> survivors;
-    auto start = [&]() -> const std::vector<std::array<D, 2>>* {
-      if (!computed) {
-        computed = true;
-        cell_failed = !budget.take() || !no_genuine_partner(eq, pc.cell, domain, 1024, nullptr, &survivors);
-      }
-      return cell_failed && survivors.empty() ? nullptr : &survivors;
-    };
+
+  Graph_piece_certifier(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                        const Curve_topology_edge& e, const Curve_topology_piece& pc,
+                        const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& partner_known,
+                        const std::vector<bool>& float_genuine, Exclusion_budget& budget,
+                        const std::vector<const Partner_domain_crossing*>& splits,
+                        const std::vector<Blown_up_partner_equations>* blown_up, const Kernel_partner_system* kernel,
+                        const std::array<D, 2>& none, Edge_partner_certificate& out, double& total, double& undecided)
+      : eq(eq), domain(domain), unbounded(unbounded), e(e), pc(pc), partner(partner), partner_known(partner_known),
+        float_genuine(float_genuine), budget(budget), splits(splits), blown_up(blown_up), kernel(kernel), none(none),
+        out(out), total(total), undecided(undecided), n(e.polyline.size()) {}
+  Graph_piece_certifier(const Graph_piece_certifier&) = delete;
+  Graph_piece_certifier& operator=(const Graph_piece_certifier&) = delete;
+
+  /// Phase 1: the spans between consecutive polyline points, halved up to `max_halvings` times while undecided,
+  /// by classify_partner_span (at a certified split point classify_span_at_split, near the trivial partner
+  /// classify_span_near_trivial_partner); runs of spans whose partner is outside the domain are excluded together,
+  /// and the undecided spans near floating-point phantom points are kept for phase 2.
+  void prove_spans(int max_halvings) {
     // Spans whose partner is proved outside the domain are excluded together: one exclusion on the hull of a run of
     // consecutive such spans (T x K_v each) is far cheaper than one per span; if it fails, one per span.
     struct Outside_span {
@@ -738,11 +227,6 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
       D T, V;
     };
     std::vector<Outside_span> run;
-    struct Strip {  // an undecided span near phantom points, and the polyline points whose status it gives
-      D T;
-      std::size_t first_point, second_point;  // (npos: none)
-    };
-    std::vector<Strip> strips;
     auto flush = [&]() {
       if (run.empty()) return;
       D H = run[0].T, HV = run[0].V;
@@ -863,6 +347,10 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                   increasing ? right_T : left_T, increasing ? right_chart : left_chart, increasing ? right_B : left_B));
     }
     flush();
+  }
+
+  /// Phase 2: the strip exclusion of the spans kept by phase 1, for the whole piece at once.
+  void exclude_undecided_strips() {
     if (!strips.empty()) {  // spans without a followed partner, near floating-point phantom points
       std::sort(strips.begin(), strips.end(), [](const Strip& x, const Strip& y) { return x.T.lo < y.T.lo; });
       std::vector<D> spans;
@@ -899,6 +387,10 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
           if (p < n && out.point_status[p] == Partner_status::undecided) merge(p, Partner_status::phantom, none);
       }
     }
+  }
+
+  /// Phase 3: the polyline points no span proof reached, each at its own value of the graph coordinate.
+  void prove_points() {
     // The points no span proof reached, each at its own value t of the graph coordinate (a span of width 0: the
     // tests that do not contract over a span often do at one value):
     //  - floating-point genuine: classify_partner_span on a small box around the floating-point (o, y);
@@ -936,6 +428,125 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
         if (exclude_point_slab(eq, domain, axis, t, pc.cell, start(), budget)) merge(i, Partner_status::phantom, none);
       }
     }
+  }
+
+ private:
+  const Partner_equations& eq;
+  const Parameter_box& domain;
+  const bool unbounded;
+  const Curve_topology_edge& e;
+  const Curve_topology_piece& pc;
+  const std::vector<std::array<double, 2>>& partner;
+  const std::vector<bool>& partner_known;
+  const std::vector<bool>& float_genuine;
+  Exclusion_budget& budget;
+  const std::vector<const Partner_domain_crossing*>& splits;
+  const std::vector<Blown_up_partner_equations>* const blown_up;
+  const Kernel_partner_system* const kernel;
+  const std::array<D, 2>& none;
+  Edge_partner_certificate& out;
+  double& total;
+  double& undecided;
+  const std::size_t n;
+  const int axis = pc.graph_axis;
+  const int other = 1 - axis;
+
+  void merge(std::size_t i, Partner_status s, const std::array<D, 2>& y) {
+    if (s == Partner_status::undecided) return;
+    out.point_status[i] = s;
+    if (s == Partner_status::genuine) out.partner_enclosure[i] = y;
+  }
+
+  // the graph coordinate and the other one at polyline point i, as intervals (end points: node enclosures)
+  D coord(std::size_t i, int c) const {
+    if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
+    if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+    if (i < splits.size() && splits[i]) return splits[i]->box[c];  // a certified split point: its proved box
+    return D{e.polyline[i][c], e.polyline[i][c]};
+  }
+
+  // The enclosure y of a genuine partner holds over the whole span (K: the span's box, where the zero curve is
+  // unique for each value of the graph coordinate). At the polyline point itself a Krawczyk test with the graph
+  // coordinate fixed, on a small box around the floating-point values inside K, encloses the same zero tightly;
+  // if it fails the span's enclosure is kept.
+  std::array<D, 2> tight(std::size_t i, Partner_status st, const std::array<D, 2>& y, const std::array<D, 3>& K,
+                         const D& span, int chart, const std::array<D, 3>& B) const {
+    if (st != Partner_status::genuine) return y;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (chart >= 0) {  // proved by the blown-up equations: the same test in (other coordinate, r, m), y = r d(m)
+      const int big = chart == 0 ? 0 : 1;
+      const bool k = partner_known[i] && partner[i][big] != 0;
+      const double guess[3] = {e.polyline[i][other], k ? partner[i][big] : nan, k ? partner[i][1 - big] / partner[i][big] : nan};
+      const std::array<D, 2> rm =
+          tight_partner_enclosure((*blown_up)[std::size_t(chart)], axis, coord(i, axis), span, guess, B, {B[1], B[2]});
+      const D rmm = rm[0] * rm[1];
+      const std::array<D, 2> t = chart == 0 ? std::array<D, 2>{rm[0], rmm} : std::array<D, 2>{rmm, rm[0]};
+      return std::array<D, 2>{D{std::max(t[0].lo, y[0].lo), std::min(t[0].hi, y[0].hi)},
+                              D{std::max(t[1].lo, y[1].lo), std::min(t[1].hi, y[1].hi)}};
+    }
+    const double guess[3] = {e.polyline[i][other], partner_known[i] ? partner[i][0] : nan,
+                             partner_known[i] ? partner[i][1] : nan};
+    return tight_partner_enclosure(eq, axis, coord(i, axis), span, guess, K, y);
+  }
+
+  // The partner pieces that survive the exclusion on the whole cell cover every candidate partner of its points:
+  // the phantom proofs of the spans start from them (computed once, on first demand). If the whole cell is
+  // excluded, start() returns an empty cover and every phantom proof is immediate.
+  bool computed = false, cell_failed = false;
+  std::vector<std::array<D, 2>> survivors;
+  const std::function<const std::vector<std::array<D, 2>>*()> start =
+      [this]() -> const std::vector<std::array<D, 2>>* {
+        if (!computed) {
+          computed = true;
+          cell_failed = !budget.take() || !no_genuine_partner(eq, pc.cell, domain, 1024, nullptr, &survivors);
+        }
+        return cell_failed && survivors.empty() ? nullptr : &survivors;
+      };
+
+  struct Strip {  // an undecided span near phantom points, and the polyline points whose status it gives
+    D T;
+    std::size_t first_point, second_point;  // (npos: none)
+  };
+  std::vector<Strip> strips;
+};
+
+/// Certifies the genuine / phantom status along an edge of a subdivision topology: for each graph piece, the
+/// spans between consecutive polyline points (halved up to `max_halvings` times while undecided) are classified
+/// by classify_partner_span; `partner[i]` is the floating-point partner of polyline point i (the first guess),
+/// `float_genuine[i]` its floating-point status (the costly exclusion fallback is tried only near phantom points).
+/// Half-branches inside singular boxes (graph_axis -1) are chained from their crossing (certify_half_branch).
+inline Edge_partner_certificate certify_edge_partners(const Partner_equations& eq, const Parameter_box& domain,
+                                                      bool unbounded, const Curve_topology_edge& e,
+                                                      const std::vector<std::array<double, 2>>& partner,
+                                                      const std::vector<bool>& partner_known,
+                                                      const std::vector<bool>& float_genuine, Exclusion_budget& budget,
+                                                      int max_halvings = 6,
+                                                      const std::vector<const Partner_domain_crossing*>& splits = {},
+                                                      const std::vector<Blown_up_partner_equations>* blown_up = nullptr,
+                                                      const Kernel_partner_system* kernel = nullptr) {
+  using D = Double_interval;
+  Edge_partner_certificate out;
+  const std::size_t n = e.polyline.size();
+  out.point_status.assign(n, Partner_status::undecided);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::array<D, 2> none{D{nan, nan}, D{nan, nan}};
+  out.partner_enclosure.assign(n, none);
+  double total = 0, undecided = 0;
+  for (const Curve_topology_piece& pc : e.pieces) {
+    if (pc.last >= n || pc.first >= pc.last) continue;
+    if (pc.graph_axis < 0) {  // a half-branch inside a singular point's box
+      const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
+                         std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
+      total += len;
+      undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known,
+                                                   float_genuine, budget, out);
+      continue;
+    }
+    Graph_piece_certifier piece(eq, domain, unbounded, e, pc, partner, partner_known, float_genuine, budget, splits,
+                                blown_up, kernel, none, out, total, undecided);
+    piece.prove_spans(max_halvings);
+    piece.exclude_undecided_strips();
+    piece.prove_points();
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
   return out;

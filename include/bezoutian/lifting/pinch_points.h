@@ -8,7 +8,7 @@
 //   G_c = H_c + m K_c (chart 0),  m H_c + K_c (chart 1),   H_c = a_c,u a0 - a_c a0,u,  K_c = a_c,v a0 - a_c a0,v,
 // square in (u, v, m). Every solution with |m| <= 1 in one of the charts (so every kernel direction) and (u, v)
 // in the box is found by subdivision of box x [-1, 1]: a sub-box is discarded when some G_c excludes 0 on it
-// (interval evaluation), and a solution is isolated by Krawczyk's test (MPFI, internal/interval_krawczyk.h) on a
+// (interval evaluation), and a solution is isolated by Krawczyk's test (MPFI, arithmetic/interval_krawczyk.h) on a
 // small box, which proves that it holds exactly one solution and that the solution is simple. The search is
 // complete when every sub-box is discarded or lies in a proved box; otherwise it says so. Points where
 // d(phi) = 0 (rank 0) make the system degenerate and stop the search as incomplete.

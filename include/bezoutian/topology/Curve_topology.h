@@ -54,8 +54,8 @@ struct Curve_topology_vertex {
 /// A piece of an edge inside one cell of the subdivision where the curve is proved to be a graph: for
 /// graph_axis 0 every line u = c meets the curve inside `cell` at most once (v = g(u), dD/dv != 0 on the cell),
 /// for graph_axis 1 every line v = c does. graph_axis -1: not a proved graph in its cell: a half-branch inside the
-/// box of a singular point, or one of the two arcs of a two-branch cell (internal/two_branch_box.h; each is a
-/// graph, but a line of the cell may also meet the other arc), or of a fold cell (internal/fold_box.h: from a
+/// box of a singular point, or one of the two arcs of a two-branch cell (topology/internal/two_branch_box.h; each is a
+/// graph, but a line of the cell may also meet the other arc), or of a fold cell (topology/internal/fold_box.h: from a
 /// crossing to the fold point, where the curve turns back). The piece runs through polyline[first .. last]; its
 /// end points are crossings of the cell's edges (or the singular or fold point) with the enclosures first_box,
 /// last_box = {u_lo, u_hi, v_lo, v_hi}.

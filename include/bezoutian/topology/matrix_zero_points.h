@@ -8,7 +8,7 @@
 // of two entries (certified multi-modular algorithm, Groebner_bivariate.h) is, in general position,
 // {h(u), v - q(u)}; the common zeros of all entries are (alpha, q(alpha)) over the real roots alpha of the gcd of h
 // and of the numerators of e(u, q(u)) for every entry e, isolated exactly and enclosed in boxes small enough for
-// the Taylor coefficients of D there (internal/multiple_point_blowup.h). Everything is univariate or modular: no
+// the Taylor coefficients of D there (topology/internal/multiple_point_blowup.h). Everything is univariate or modular: no
 // exact Buchberger run, whose coefficient growth made 32-bit inputs take minutes.
 #ifndef BEZOUTIAN_TOPOLOGY_MATRIX_ZERO_POINTS_H
 #define BEZOUTIAN_TOPOLOGY_MATRIX_ZERO_POINTS_H

@@ -6,7 +6,6 @@
 #include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/arithmetic/Error.h>
-#include <bezoutian/arithmetic/profiling.h>
 #include <bezoutian/geometry/Rational_bezier_curve.h>
 #include <bezoutian/algebraic/Root_isolation.h>
 #include <bezoutian/intersection/curve_intersection_support.h>

@@ -5,6 +5,7 @@
 #ifndef BEZOUTIAN_ARRANGEMENT_INTERNAL_ARR_BEZIER_PARAMETER_H
 #define BEZOUTIAN_ARRANGEMENT_INTERNAL_ARR_BEZIER_PARAMETER_H
 
+#include <bezoutian/arithmetic/profiling.h>
 #include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/arithmetic/Error.h>
@@ -31,7 +32,7 @@ struct Arr_exact_pair {
   std::vector<std::pair<Algebraic_real, Algebraic_real>> points;  // (s on a, t on b)
   void compute() {
     if (done) return;
-    BEZOUTIAN_ARR_TIME("exact pair (lazy)");
+    BEZOUTIAN_PROFILE_SCOPE("exact pair (lazy)");
     const Curve_intersection_result r = a == b ? self_intersections(a->curve) : intersect_curves(a->curve, b->curve);
     for (const auto& p : r.points) points.push_back({p.s, p.t});
     done = true;
@@ -47,7 +48,7 @@ struct Arr_lazy_point {
   Algebraic_real st[2];
   void materialize() {
     if (exact) return;
-    BEZOUTIAN_ARR_TIME("materialize");
+    BEZOUTIAN_PROFILE_SCOPE("materialize");
     pair->compute();
     int found = -1;
     for (std::size_t i = 0; i < pair->points.size(); ++i) {

@@ -17,6 +17,7 @@
 #define BEZOUTIAN_TOPOLOGY_INTERNAL_DOUBLE_DOUBLE_BERNSTEIN_H
 
 #include <bezoutian/topology/internal/double_bernstein_grid.h>
+#include <bezoutian/arithmetic/double_double.h>
 #include <bezoutian/arithmetic/number_types.h>
 
 #include <algorithm>
@@ -26,33 +27,6 @@
 
 namespace bezoutian {
 namespace internal {
-
-struct Double_double {
-  double hi = 0, lo = 0;
-};
-
-inline Double_double two_sum(double a, double b) {
-  const double s = a + b, bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb)};
-}
-inline Double_double fast_two_sum(double a, double b) {  // |a| >= |b| (or a == 0)
-  const double s = a + b;
-  return {s, b - (s - a)};
-}
-inline Double_double dd_mul(const Double_double& x, const Double_double& y) {
-  const double p = x.hi * y.hi;
-  double e = std::fma(x.hi, y.hi, -p);
-  e += x.hi * y.lo + x.lo * y.hi;
-  return fast_two_sum(p, e);
-}
-inline Double_double dd_add(const Double_double& x, const Double_double& y) {
-  Double_double s = two_sum(x.hi, y.hi);
-  const Double_double t = two_sum(x.lo, y.lo);
-  s.lo += t.hi;
-  s = fast_two_sum(s.hi, s.lo);
-  s.lo += t.lo;
-  return fast_two_sum(s.hi, s.lo);
-}
 
 class Double_double_bernstein {
  public:
