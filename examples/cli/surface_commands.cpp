@@ -71,6 +71,7 @@ std::string text(const bezoutian::Rational& q) {
 nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   using nlohmann::json;
   json j;
+  j["equation_computed"] = L.equation_computed;  // false: answered by a direct proof, without elimination
   j["matrix_size"] = L.equation.matrix.size();
   json terms = json::array();
   for (const auto& t : L.equation.terms()) terms.push_back({std::get<0>(t), std::get<1>(t), text(std::get<2>(t))});
@@ -333,10 +334,15 @@ void write_obj(const std::string& path, const std::vector<const Patch*>& patches
 
 void print_text(const bezoutian::Surface_locus& L, double seconds) {
   const auto& e = L.equation;
-  std::cout << (L.self_intersection ? "Self-intersection" : "Intersection") << " locus: Bezoutian matrix "
-            << e.matrix.size() << " x " << e.matrix.size() << ", D(" << e.variables[0] << "," << e.variables[1]
-            << ") of bi-degree (" << e.degree(0) << ", " << e.degree(1) << "), total degree " << e.total_degree()
-            << ", " << e.terms().size() << " terms\n";
+  std::cout << (L.self_intersection ? "Self-intersection" : "Intersection") << " locus: ";
+  if (L.equation_computed)
+    std::cout << "Bezoutian matrix " << e.matrix.size() << " x " << e.matrix.size() << ", ";
+  else
+    std::cout << "no elimination (" << L.note << ")" << (CGAL::is_zero(e.determinant) ? "" : ", ");
+  if (L.equation_computed || !CGAL::is_zero(e.determinant))
+    std::cout << "D(" << e.variables[0] << "," << e.variables[1] << ") of bi-degree (" << e.degree(0) << ", "
+              << e.degree(1) << "), total degree " << e.total_degree() << ", " << e.terms().size() << " terms";
+  std::cout << "\n";
   static const char* side_name[4] = {"v=0", "u=1", "v=1", "u=0"};
   for (const auto& c : L.contacts) {
     std::cout << "contact: " << (c.shared_curve ? "shared boundary curve" : "boundary point") << ", side "

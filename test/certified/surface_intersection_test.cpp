@@ -87,12 +87,23 @@ TEST_CASE("a patch covering its image twice is reported; a pinch double curve is
 
 TEST_CASE("a paraboloid and a bent paraboloid cross along a closed curve", "[surface]") {
   // Phi(u,v) = (u, v, u^2 + v^2), Psi(s,t) = (s + s^2, t, 1 - s^2 - t^2): Phi(u,v) = Psi(s,t) iff u = s + s^2,
-  // v = t and (s + s^2)^2 + t^2 = 1 - s^2 - t^2, a closed curve. (Two plain paraboloids would have parallel
-  // leading coefficient vectors and a common point at infinity: det B = 0, correctly reported.)
+  // v = t and (s + s^2)^2 + t^2 = 1 - s^2 - t^2, a closed curve. Two plain paraboloids have parallel leading
+  // coefficient vectors and a common point at infinity: det B = 0; they are two height fields over one square, and
+  // meet where u^2 + v^2 = 1/2 (intersection/Patch_common_projection.h): a quarter circle across [0,1]^2.
   Patch phi = from_power({"u", "v", "u^2 + v^2"}, 2, 2);
   Patch psi = from_power({"u + u^2", "v", "1 - u^2 - v^2"}, 2, 2);
   Patch flat = from_power({"u", "v", "1 - u^2 - v^2"}, 2, 2);
-  CHECK_THROWS_AS(intersection_locus(phi, flat), Invalid_input);
+  CHECK(intersection_equation(phi, flat).is_degenerate());
+  const Surface_locus F = intersection_locus(phi, flat);
+  REQUIRE(F.topology_computed);
+  REQUIRE(F.topology.components.size() == 1);
+  CHECK_FALSE(F.topology.components[0].closed);
+  CHECK(F.topology.number_of_boundary_points() == 2);
+  for (const auto& arc : F.arcs)
+    for (const auto& q : arc.points) {
+      CHECK(q.genuine);
+      CHECK(std::fabs(q.projection[0] * q.projection[0] + q.projection[1] * q.projection[1] - 0.5) < 1e-8);
+    }
   Surface_intersection_options o;
   o.box = Parameter_box{Q(-2), Q(2), Q(-2), Q(2)};
   o.partner_domain = o.box;
@@ -368,14 +379,23 @@ TEST_CASE("teapot: the handle and the spout cut the body along closed curves, sy
 // A patch whose projection to the (x, y) plane, (u + v^2/10, v + u^2/10), is one-to-one on the unit square (its
 // Jacobian differs from the identity by less than 1 in norm, on a convex domain) cannot self-intersect. On [0,1]^2
 // D = 0 (total degree 6) misses the box; on [-2,3]^2 it does not, but the part it crosses is proved free of genuine
-// points (partners outside the domain): the locus comes out empty, with a proof either way. (For an exact graph
-// (u, v, f) det B vanishes identically: the double-point system degenerates at infinity; reported as an error.)
+// points (partners outside the domain): the locus comes out empty, with a proof either way. For an exact graph
+// (u, v, f) det B vanishes identically (the double-point system degenerates at infinity); the direct proof of
+// injectivity (intersection/Patch_injectivity.h) answers it, and answers the bent patch on [0,1]^2 without D.
 TEST_CASE("a patch without self-intersection: the empty locus is proved", "[surface]") {
   const Patch graph = from_power({"u", "v", "u^3 - 3*u*v^2 + v"}, 3, 3);
-  CHECK_THROWS_AS(self_intersection_locus(graph), Invalid_input);
+  // the exact graph: det B vanishes identically, and the patch is proved injective instead (its projection to the
+  // (x, y) plane is the identity of the square)
+  CHECK(self_intersection_equation(graph).is_degenerate());
+  const Surface_locus G = self_intersection_locus(graph);
+  CHECK(G.topology_computed);
+  CHECK(G.topology_method == "injective projection");
+  CHECK(G.topology.components.empty());
   const Patch bent = from_power({"u + 1/10*v^2", "v + 1/10*u^2", "u^3 - 3*u*v^2 + v"}, 3, 3);
+  CHECK(self_intersection_locus(bent).topology_method == "injective projection");
   for (int wide = 0; wide < 2; ++wide) {
     Surface_intersection_options o;
+    o.direct_proofs = false;  // the elimination route: D and its topology
     if (wide) o.box = Parameter_box{Q(-2), Q(3), Q(-2), Q(3)};
     Surface_locus L = self_intersection_locus(bent, o);
     INFO(L.note);

@@ -8,13 +8,16 @@
 // What is certified: D exactly; the components of D = 0 in the box, its singular points with their branch
 // counts and its boundary points. The lifting of sample points to the partner parameters is computed in
 // floating point (verified by the residual |Phi - Psi| at each point); the genuine / phantom status along the arcs
-// of a subdivision topology is then proved where possible (internal/certified_lifting.h: a partner enclosed in
+// of a subdivision topology is then proved where possible (lifting/certified_lifting.h: a partner enclosed in
 // the partner domain by a parametric Krawczyk test, or every partner excluded), and each traced point says whether
 // its status is proved (Locus_point::status_proved, Locus_arc::undecided_fraction).
 #ifndef BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
 #define BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
 
 #include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/intersection/Patch_common_projection.h>
+#include <bezoutian/intersection/Patch_injectivity.h>
+#include <bezoutian/intersection/Patch_separation.h>
 #include <bezoutian/topology/Curve_topology_by_subdivision.h>
 #include <bezoutian/intersection/internal/box_edge_lines.h>
 #include <bezoutian/lifting/certified_lifting.h>
@@ -61,15 +64,21 @@ struct Surface_intersection_options {
       whole_plane_topology;
   /// Limits of the subdivision.
   Subdivision_topology_options subdivision;
-  /// Prove the genuine / phantom status along the arcs (internal/certified_lifting.h; subdivision topologies
+  /// Prove the genuine / phantom status along the arcs (lifting/certified_lifting.h; subdivision topologies
   /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
   bool certify_lifting = true;
   /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus, and as
-  /// many again for the fallback on spans without a followed partner (internal/certified_lifting.h); the spans
+  /// many again for the fallback on spans without a followed partner (lifting/certified_lifting.h); the spans
   /// left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
   /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
   std::size_t lifting_exclusion_budget = 5000;
-  /// Self-intersection: search the pinch points of the patch in the box (internal/pinch_points.h), with at most
+  /// Direct proofs tried before any elimination, when the box and the partner domain lie in [0,1]^2: a
+  /// self-intersection is empty when the patch is proved injective (intersection/Patch_injectivity.h: a height
+  /// field, a sphere octant, most patches of a model), an intersection when the patches are proved apart
+  /// (intersection/Patch_separation.h). The locus then has no implicit equation (Surface_locus::equation_computed
+  /// false) and its topology, proved empty but for the sides a patch collapses to a point, names the proof.
+  bool direct_proofs = true;
+  /// Self-intersection: search the pinch points of the patch in the box (lifting/pinch_points.h), with at most
   /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
   std::size_t pinch_point_boxes = 600000;
 };
@@ -86,12 +95,12 @@ struct Locus_point {
   bool genuine = false;
   /// `genuine` is proved for the point of D = 0 that this traced point approximates: genuine by a partner enclosed
   /// in the partner domain (parametric Krawczyk), phantom by an exclusion of every partner
-  /// (internal/certified_lifting.h). False: decided in floating point only.
+  /// (lifting/certified_lifting.h). False: decided in floating point only.
   bool status_proved = false;
   /// For a point proved genuine: a box {{y1_lo, y1_hi}, {y2_lo, y2_hi}} in the coordinates of `partner` ((l, k) or
   /// (v, s)) proved to contain a partner, inside the partner domain, of the exact point of D = 0 that this traced
   /// point approximates (the point of the exact arc with the same graph coordinate; parametric Krawczyk over the
-  /// span, internal/certified_lifting.h). NaN otherwise. `partner` itself is a floating-point approximation.
+  /// span, lifting/certified_lifting.h). NaN otherwise. `partner` itself is a floating-point approximation.
   std::array<std::array<double, 2>, 2> partner_enclosure{
       {{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()},
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}}};
@@ -120,7 +129,7 @@ struct Boundary_contact {
 
 /// A point inside the box where the genuine part of an arc ends: a partner reaches the boundary of the partner
 /// domain there (the intersection curve meets a boundary curve of the second patch; a double curve of a
-/// self-intersection leaves the patch through its other sheet). Certified (internal/partner_domain_crossings.h):
+/// self-intersection leaves the patch through its other sheet). Certified (lifting/partner_domain_crossings.h):
 /// `box` holds exactly one solution (x1, x2, y1, y2) of the partner equations together with
 /// `boundary coordinate = bound`, a transversal crossing, and that solution is the point of the arc over its graph
 /// coordinate. Its traced point arc.points[index] is genuine (status proved; the partner lies on the domain's
@@ -137,7 +146,7 @@ struct Locus_split_point {
 
 /// A side of the box on which D vanishes identically: every point of it is a point of the projected locus. Its
 /// line's factor is removed from D before the topology, which describes the rest of D = 0 (whose boundary points
-/// on this side are where the rest meets it). The cause is decided exactly (internal/box_edge_lines.h): a collapsed
+/// on this side are where the rest meets it). The cause is decided exactly (intersection/internal/box_edge_lines.h): a collapsed
 /// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
 /// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
 /// the seam of a closed patch), both genuine at every point; or the side's fixed coordinate lies outside the
@@ -162,11 +171,15 @@ struct Locus_edge_line {
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
+  /// False when a direct proof answered without elimination (Surface_intersection_options::direct_proofs):
+  /// `equation` is then empty and `note` gives the proof.
+  bool equation_computed = true;
   Implicit_equation equation;
   Curve_topology_in_box topology;
   std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
   bool topology_computed = false;
-  /// "subdivision" (Bernstein subdivision in the box) or "curve analysis" (CGAL's arrangement), if computed
+  /// "subdivision" (Bernstein subdivision in the box), "curve analysis" (CGAL's arrangement), or the direct proof
+  /// ("injective projection", "separated hulls"), if computed
   std::string topology_method;
   std::string note;  ///< why the topology was not computed, if it was not
   /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
@@ -442,7 +455,7 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   return true;
 }
 
-// The geometric proofs used by the subdivision (internal/double_partner_witness.h): nodes and isolated points of
+// The geometric proofs used by the subdivision (lifting/double_partner_witness.h): nodes and isolated points of
 // D = 0 proved by two partners, and regions without any partner in the partner domain left out. Hooks set by the
 // caller are kept.
 inline Surface_intersection_options with_partner_proofs(const Surface_intersection_options& o,
@@ -517,7 +530,7 @@ inline Locus_point edge_line_point(const Edge_line_explanation& x, int side, con
   return q;
 }
 
-// The box's sides on D = 0 (found by topology_is_affordable): their cause (internal/box_edge_lines.h) and sample
+// The box's sides on D = 0 (found by topology_is_affordable): their cause (intersection/internal/box_edge_lines.h) and sample
 // points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
 // exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
 template <class Lift>
@@ -624,7 +637,7 @@ inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_e
   return *r;
 }
 
-// Inserts the certified split points (internal/partner_domain_crossings.h) into the arcs of a subdivision topology:
+// Inserts the certified split points (lifting/partner_domain_crossings.h) into the arcs of a subdivision topology:
 // between consecutive traced points whose floating-point statuses differ, the crossing of a side of the partner
 // domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
 // the pieces' index ranges shifted) and a Locus_split_point.
@@ -678,7 +691,7 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
   }
 }
 
-// Proves the genuine / phantom status along the arcs of a subdivision topology (internal/certified_lifting.h),
+// Proves the genuine / phantom status along the arcs of a subdivision topology (lifting/certified_lifting.h),
 // starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
 template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
@@ -739,15 +752,18 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
 
 /// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
 /// every traced point lifted to the two parameter points (u, v+k) and (u+l, v) with the same image.
-inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rational>& patch,
-                                             const Surface_intersection_options& o = {}) {
-  Surface_locus L;
-  L.self_intersection = true;
-  L.equation = self_intersection_equation(patch, o.formula);
-  if (L.equation.is_degenerate())
-    throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
-                        "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
-                        "infinity, as for an exact graph (u, v, f(u,v)))");
+namespace internal {
+
+// The box and the partner domain lie in the patches' domain [0,1]^2, where the direct proofs apply.
+inline bool within_unit_square(const Surface_intersection_options& o) {
+  auto inside = [](const Parameter_box& b) {
+    return Rational(0) <= b.u0 && b.u1 <= Rational(1) && Rational(0) <= b.v0 && b.v1 <= Rational(1);
+  };
+  return !o.partner_domain_unbounded && inside(o.box) && inside(o.partner_domain);
+}
+
+inline void search_pinch_points(Surface_locus& L, const Rational_bezier_patch<Rational>& patch,
+                                const Surface_intersection_options& o) {
   if (o.pinch_point_boxes > 0) {
     Pinch_point_search pinch = internal::find_pinch_points(patch, o.box, o.pinch_point_boxes);
     L.pinch_points = pinch.points;
@@ -756,6 +772,104 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   } else {
     L.pinch_points_note = "not searched (pinch_point_boxes = 0)";
   }
+}
+
+// The self-intersection locus of a patch proved injective: no double point but the pairs of points of a side that
+// the patch collapses to one point, which are reported as edge lines when the side is a side of the box.
+inline Surface_locus injective_patch_locus(const Rational_bezier_patch<Rational>& patch,
+                                           const Surface_intersection_options& o, const Injectivity_proof& proof) {
+  Surface_locus L;
+  L.self_intersection = true;
+  L.equation_computed = false;
+  L.topology.box = o.box;
+  L.topology_computed = true;
+  L.topology_method = "injective projection";
+  L.note = proof.reason;
+  for (int side : proof.collapsed_sides) {
+    const Rational domain_side = (side == 0 || side == 3) ? Rational(0) : Rational(1);
+    if (side_value(o.box, side) != domain_side) continue;
+    Locus_edge_line e;
+    e.side = side;
+    e.value = domain_side;
+    L.edge_lines.push_back(e);
+  }
+  // every side here is collapsed, so genuine: its samples come from the side itself, never from a lifting
+  describe_edge_lines(L, o, patch, nullptr, [](double, double, const std::array<double, 2>*) { return Locus_point{}; });
+  search_pinch_points(L, patch, o);
+  return L;
+}
+
+// The intersection locus of two patches proved apart: empty.
+inline Surface_locus separated_patches_locus(const Surface_intersection_options& o, const Separation_proof& proof) {
+  Surface_locus L;
+  L.self_intersection = false;
+  L.equation_computed = false;
+  L.topology.box = o.box;
+  L.topology_computed = true;
+  L.topology_method = "separated hulls";
+  L.note = proof.reason;
+  return L;
+}
+
+// The box, seen through the exact partner (v, s) = (t, u) of two patches over one projection, lies in the partner
+// domain: u in [d.u0, d.u1] (s = u) and t in [d.v0, d.v1] (v = t).
+inline bool box_within_transposed_domain(const Surface_intersection_options& o) {
+  const Parameter_box &b = o.box, &d = o.partner_domain;
+  return d.u0 <= b.u0 && b.u1 <= d.u1 && d.v0 <= b.v0 && b.v1 <= d.v1;
+}
+
+// The intersection locus of two patches over one projection (intersection/Patch_common_projection.h): D = h, the
+// partner of (u, t) is (v, s) = (t, u) exactly, and every point of h = 0 in the box is genuine, proved.
+inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rational>& phi,
+                                             const Rational_bezier_patch<Rational>& psi,
+                                             const Surface_intersection_options& o, const Common_projection& cp,
+                                             std::vector<Boundary_contact> contacts) {
+  Surface_locus L;
+  L.self_intersection = false;
+  L.equation_computed = false;
+  L.contacts = std::move(contacts);
+  L.equation.variables = {"u", "t"};
+  L.equation.determinant = normalized_primitive_part(integer_multiple(cp.height_difference));
+  L.equation.square_free = normalized_square_free_part(L.equation.determinant);
+  L.note = cp.reason;
+  const bool traced = topology_is_affordable(L, with_partner_proofs(o, Partner_equations(phi, psi)));
+  auto lift_point = [&](double u, double t, const std::array<double, 2>*) {
+    Locus_point q;
+    q.projection = {u, t};
+    q.partner = {t, u};
+    q.first = {u, t};
+    q.second = {u, t};
+    q.lifted = true;
+    q.point_3d = phi.evaluate(u, t);
+    q.residual = distance3(q.point_3d, psi.evaluate(u, t));
+    q.genuine = true;  // the partner (t, u) lies in the partner domain (box_within_transposed_domain)
+    q.status_proved = true;
+    return q;
+  };
+  describe_edge_lines(L, o, phi, &psi, lift_point);
+  if (!traced) return L;
+  lift_arcs(L, lift_point);
+  for (Locus_arc& arc : L.arcs) arc.undecided_fraction = 0;
+  mark_ends_on_edge_lines(L, o, phi, &psi);
+  return L;
+}
+
+}  // namespace internal
+
+inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rational>& patch,
+                                             const Surface_intersection_options& o = {}) {
+  if (o.direct_proofs && internal::within_unit_square(o)) {
+    const Injectivity_proof proof = prove_injective(patch);
+    if (proof.proved) return internal::injective_patch_locus(patch, o, proof);
+  }
+  Surface_locus L;
+  L.self_intersection = true;
+  L.equation = self_intersection_equation(patch, o.formula);
+  if (L.equation.is_degenerate())
+    throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
+                        "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
+                        "infinity, as for an exact graph (u, v, f(u,v)))");
+  internal::search_pinch_points(L, patch, o);
   const bool traced = internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch)));
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
@@ -822,7 +936,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
 
 /// \brief The split point `sp` of the self-intersection locus of `patch` to any precision: boxes with rational
 /// bounds {lo, hi}, narrower than 2^-bits, around its exact coordinates (u, v, l, k) (Locus_split_point::box
-/// refined by Krawczyk's test in MPFI arithmetic, internal/partner_domain_crossings.h). Throws Error if the
+/// refined by Krawczyk's test in MPFI arithmetic, lifting/partner_domain_crossings.h). Throws Error if the
 /// refinement fails.
 inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Rational_bezier_patch<Rational>& patch,
                                                                   const Locus_split_point& sp, int bits) {
@@ -908,6 +1022,20 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   Surface_locus L;
   L.self_intersection = false;
   L.contacts = boundary_contacts(phi, psi);
+  if (o.direct_proofs && internal::within_unit_square(o)) {
+    if (internal::box_within_transposed_domain(o)) {
+      const Common_projection cp = common_projection(phi, psi);
+      if (cp.found && CGAL::is_zero(cp.height_difference))
+        throw Invalid_input("intersection: the patches coincide: Phi(u, v) = Psi(u, v) on the whole square (proved: " +
+                            cp.reason + ", and the remaining coordinates agree)");
+      if (cp.found) return internal::common_projection_locus(phi, psi, o, cp, std::move(L.contacts));
+    }
+    // patches with a boundary contact meet: only the others can be apart (a budget of 2000 pairs of pieces)
+    if (L.contacts.empty()) {
+      const Separation_proof proof = prove_disjoint(phi, psi, 3, 2000);
+      if (proof.proved) return internal::separated_patches_locus(o, proof);
+    }
+  }
   L.equation = intersection_equation(phi, psi, o.formula);
   if (L.equation.is_degenerate())
     throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
