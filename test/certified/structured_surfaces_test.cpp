@@ -4,6 +4,7 @@
 // form curve, in the parameter plane and in 3D.
 #include <bezoutian/intersection/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
+#include "power_patch.h"
 
 #include <catch2/catch.hpp>
 
@@ -20,10 +21,7 @@ namespace {
 
 Rational_bezier_patch<> power_patch(const std::string& x, const std::string& y, const std::string& z, const std::string& w,
                                     int m, int n) {
-  const std::string json = "{\"patch\": {\"basis\": \"power\", \"parameters\": [\"u\", \"v\"], \"x\": \"" + x +
-                           "\", \"y\": \"" + y + "\", \"z\": \"" + z + "\", \"w\": \"" + w + "\", \"degree\": [" +
-                           std::to_string(m) + ", " + std::to_string(n) + "]}}";
-  return io::read_json(json, "test").patches.at(0);
+  return bezoutian_test::rational_patch_from_power({x, y, z, w}, m, n);
 }
 
 std::size_t traced_points(const Surface_locus& L) {

@@ -7,6 +7,7 @@
 #include <bezoutian/intersection/Patch_injectivity.h>
 #include <bezoutian/intersection/Patch_separation.h>
 #include <bezoutian/io/Geometry_document.h>
+#include "power_patch.h"
 
 #include <catch2/catch.hpp>
 
@@ -22,10 +23,7 @@ namespace {
 
 Rational_bezier_patch<> power_patch(const std::string& x, const std::string& y, const std::string& z, const std::string& w,
                                     int m, int n) {
-  const std::string json = "{\"patch\": {\"basis\": \"power\", \"parameters\": [\"u\", \"v\"], \"x\": \"" + x +
-                           "\", \"y\": \"" + y + "\", \"z\": \"" + z + "\", \"w\": \"" + w + "\", \"degree\": [" +
-                           std::to_string(m) + ", " + std::to_string(n) + "]}}";
-  return io::read_json(json, "test").patches.at(0);
+  return bezoutian_test::rational_patch_from_power({x, y, z, w}, m, n);
 }
 
 // The smallest 3D distance between samples of the patch on an N x N grid whose parameters are at least `apart`
