@@ -18,6 +18,7 @@
 #include <bezoutian/intersection/Patch_common_projection.h>
 #include <bezoutian/intersection/Patch_injectivity.h>
 #include <bezoutian/intersection/Patch_separation.h>
+#include <bezoutian/intersection/Surface_locus.h>
 #include <bezoutian/topology/Curve_topology_by_subdivision.h>
 #include <bezoutian/intersection/internal/box_edge_lines.h>
 #include <bezoutian/lifting/certified_lifting.h>
@@ -81,120 +82,6 @@ struct Surface_intersection_options {
   /// Self-intersection: search the pinch points of the patch in the box (lifting/pinch_points.h), with at most
   /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
   std::size_t pinch_point_boxes = 600000;
-};
-
-/// A traced point of the locus: the point of the projection plane, its partner parameters, its 3D point.
-struct Locus_point {
-  std::array<double, 2> projection{};  ///< (u,v) (self) or (u,t) (intersection)
-  std::array<double, 2> partner{};     ///< (k,l) offsets turned into parameters: see Surface_locus
-  std::array<double, 2> first{}, second{};  ///< the two parameter points that map to the same 3D point
-  std::array<double, 3> point_3d{};
-  double residual = std::numeric_limits<double>::quiet_NaN();  ///< |Phi(first) - Phi/Psi(second)|
-  bool lifted = false;   ///< the kernel gave a partner
-  /// partner inside its domain, distinct from the point itself, and verified: residual <= 1e-7 (1 + |point_3d|)
-  bool genuine = false;
-  /// `genuine` is proved for the point of D = 0 that this traced point approximates: genuine by a partner enclosed
-  /// in the partner domain (parametric Krawczyk), phantom by an exclusion of every partner
-  /// (lifting/certified_lifting.h). False: decided in floating point only.
-  bool status_proved = false;
-  /// For a point proved genuine: a box {{y1_lo, y1_hi}, {y2_lo, y2_hi}} in the coordinates of `partner` ((l, k) or
-  /// (v, s)) proved to contain a partner, inside the partner domain, of the exact point of D = 0 that this traced
-  /// point approximates (the point of the exact arc with the same graph coordinate; parametric Krawczyk over the
-  /// span, lifting/certified_lifting.h). NaN otherwise. `partner` itself is a floating-point approximation.
-  std::array<std::array<double, 2>, 2> partner_enclosure{
-      {{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()},
-       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}}};
-};
-
-/// One arc of D = 0 inside the box, traced.
-struct Locus_arc {
-  std::size_t source = 0, target = 0;  ///< vertices of the certified topology
-  std::vector<Locus_point> points;
-  /// Share of the arc (by length of its graph coordinate) whose genuine / phantom status is not proved: 0 when
-  /// every point of the exact arc, not only the traced ones, is proved genuine or phantom; 1 if nothing is.
-  double undecided_fraction = 1;
-};
-
-/// Two patches in contact along their boundaries (the teapot's patches are glued edge to edge): a piece of a
-/// boundary curve of the first patch lying on a boundary curve of the second (`shared_curve`), or an isolated
-/// common boundary point (touching corners, a boundary crossing). Decided exactly with the curve engine
-/// (intersect_curves on the boundary curves); parameters run along the boundary curves.
-struct Boundary_contact {
-  int side_first = 0, side_second = 0;  ///< boundary_curve sides: 0: v = 0, 1: u = 1, 2: v = 1, 3: u = 0
-  bool shared_curve = false;            ///< infinitely many common points (a common piece of boundary curve)
-  Algebraic_real first_0, first_1;      ///< parameter range on the first patch's boundary curve (equal for a point)
-  Algebraic_real second_0, second_1;    ///< the corresponding range on the second patch's boundary curve
-  std::array<double, 3> point{};        ///< the contact point (the start of a shared piece)
-};
-
-/// A point inside the box where the genuine part of an arc ends: a partner reaches the boundary of the partner
-/// domain there (the intersection curve meets a boundary curve of the second patch; a double curve of a
-/// self-intersection leaves the patch through its other sheet). Certified (lifting/partner_domain_crossings.h):
-/// `box` holds exactly one solution (x1, x2, y1, y2) of the partner equations together with
-/// `boundary coordinate = bound`, a transversal crossing, and that solution is the point of the arc over its graph
-/// coordinate. Its traced point arc.points[index] is genuine (status proved; the partner lies on the domain's
-/// boundary, the other coordinates inside), and the floating-point statuses on its two sides differ.
-struct Locus_split_point {
-  std::size_t arc = 0;    ///< index into Surface_locus::arcs
-  std::size_t index = 0;  ///< the traced point arcs[arc].points[index]
-  int point = 0;          ///< the parameter point on the boundary: 0 Locus_point::first, 1 Locus_point::second
-  int coordinate = 0;     ///< its coordinate on the boundary: 0 (u or s), 1 (v or t)
-  Rational bound;         ///< the boundary value of that coordinate
-  /// {x1, x2, y1, y2}: the projection (u, v or u, t) and the partner ((l, k) or (v, s)), each {lo, hi}
-  std::array<std::array<double, 2>, 4> box{};
-};
-
-/// A side of the box on which D vanishes identically: every point of it is a point of the projected locus. Its
-/// line's factor is removed from D before the topology, which describes the rest of D = 0 (whose boundary points
-/// on this side are where the rest meets it). The cause is decided exactly (intersection/internal/box_edge_lines.h): a collapsed
-/// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
-/// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
-/// the seam of a closed patch), both genuine at every point; or the side's fixed coordinate lies outside the
-/// partner domain (phantom at every point).
-struct Locus_edge_line {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
-  int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
-  Rational value;  ///< the fixed coordinate of the side
-  Cause cause = unexplained;
-  /// collapsed / shared_curve: the side of the partner domain (boundary_curve order) whose iso-curve holds the
-  /// partner points; -1 for a self-intersection's collapsed side paired with itself
-  int partner_side = -1;
-  bool genuine = false;        ///< every point of the side has a partner in the partner domain (collapsed, shared_curve)
-  bool status_proved = false;  ///< `genuine` is proved for the whole side (every cause but unexplained)
-  std::string description;     ///< one line for people
-  /// samples along the side (samples_per_arc + 1, ends included): for a proved cause the partner comes from it (a
-  /// floating-point point of the partner iso-curve; status_proved set, partner_enclosure NaN); otherwise the lifting
-  /// of the arcs (floating point).
-  std::vector<Locus_point> points;
-};
-
-/// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
-struct Surface_locus {
-  bool self_intersection = true;
-  /// False when a direct proof answered without elimination (Surface_intersection_options::direct_proofs):
-  /// `equation` is then empty and `note` gives the proof.
-  bool equation_computed = true;
-  Implicit_equation equation;
-  Curve_topology_in_box topology;
-  std::vector<Locus_arc> arcs;  ///< parallel to topology.edges
-  bool topology_computed = false;
-  /// "subdivision" (Bernstein subdivision in the box), "curve analysis" (CGAL's arrangement), or the direct proof
-  /// ("injective projection", "separated hulls"), if computed
-  std::string topology_method;
-  std::string note;  ///< why the topology was not computed, if it was not
-  /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
-  std::vector<Boundary_contact> contacts;
-  /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
-  std::vector<Locus_edge_line> edge_lines;
-  /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
-  /// is also a traced point of its arc.
-  std::vector<Locus_split_point> split_points;
-  /// Self-intersection: the pinch points of the patch in the box (rank-1 Jacobian: the double curve ends there,
-  /// its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
-  /// says whether every other point of the box is proved not to be one (else `pinch_points_note` says why not).
-  std::vector<Pinch_point> pinch_points;
-  bool pinch_points_complete = false;
-  std::string pinch_points_note;
 };
 
 namespace internal {

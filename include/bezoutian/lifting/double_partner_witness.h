@@ -572,12 +572,185 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
   return out;
 }
 
+// One candidate pair of partners of prove_double_partner_point: refined in floating point, then the box of the
+// 6 x 6 system proved by Krawczyk's test and the conditions of the header comment checked on it.
+using Partner_pair = std::pair<std::array<std::complex<double>, 2>, std::array<std::complex<double>, 2>>;
+
+inline bool prove_partner_pair(const Partner_equations& eq, const Parameter_box& box, const std::array<double, 2>& x,
+                               const Partner_pair& pr, mpfr_prec_t prec) {
+  using C = std::complex<double>;
+  using I = Mpfi_interval;
+  const bool complex_pair = pr.first[0].imag() != 0 || pr.first[1].imag() != 0;
+  // unknowns w = (x1, x2, ya1, ya2, yb1, yb2) (real pair) or (x1, x2, rho1, rho2, sigma1, sigma2) (complex)
+  std::array<double, 6> w{x[0], x[1], pr.first[0].real(), pr.first[1].real(),
+                          complex_pair ? pr.first[0].imag() : pr.second[0].real(),
+                          complex_pair ? pr.first[1].imag() : pr.second[1].real()};
+  // the two partner arguments z_a, z_b of E as complex numbers, for the floating-point Newton refinement
+  auto args = [&](const std::array<double, 6>& v) {
+    std::array<std::array<C, 4>, 2> z;
+    if (complex_pair) {
+      z[0] = {C(v[0]), C(v[1]), C(v[2], v[4]), C(v[3], v[5])};
+      z[1] = {C(v[0]), C(v[1]), C(v[2], -v[4]), C(v[3], -v[5])};
+    } else {
+      z[0] = {C(v[0]), C(v[1]), C(v[2]), C(v[3])};
+      z[1] = {C(v[0]), C(v[1]), C(v[4]), C(v[5])};
+    }
+    return z;
+  };
+  // real 6 x 6 system and its Jacobian (double)
+  auto system = [&](const std::array<double, 6>& v, double F[6], double J[6][6]) {
+    const auto z = args(v);
+    std::array<C, 3> E;
+    std::array<std::array<C, 4>, 3> Jc;
+    if (complex_pair) {
+      eq.evaluate(z[0], E, Jc);
+      for (int c = 0; c < 3; ++c) {
+        F[c] = E[c].real();
+        F[3 + c] = E[c].imag();
+        for (int i = 0; i < 2; ++i) {  // real x_i
+          J[c][i] = Jc[c][i].real();
+          J[3 + c][i] = Jc[c][i].imag();
+        }
+        for (int i = 0; i < 2; ++i) {  // y_i = rho_i + i sigma_i, E holomorphic in y_i (Cauchy-Riemann)
+          J[c][2 + i] = Jc[c][2 + i].real();
+          J[3 + c][2 + i] = Jc[c][2 + i].imag();
+          J[c][4 + i] = -Jc[c][2 + i].imag();
+          J[3 + c][4 + i] = Jc[c][2 + i].real();
+        }
+      }
+    } else {
+      for (int s = 0; s < 2; ++s) {
+        eq.evaluate(z[s], E, Jc);
+        for (int c = 0; c < 3; ++c) {
+          F[3 * s + c] = E[c].real();
+          for (int i = 0; i < 6; ++i) J[3 * s + c][i] = 0;
+          J[3 * s + c][0] = Jc[c][0].real();
+          J[3 * s + c][1] = Jc[c][1].real();
+          J[3 * s + c][2 + 2 * s] = Jc[c][2].real();
+          J[3 * s + c][3 + 2 * s] = Jc[c][3].real();
+        }
+      }
+    }
+  };
+  bool converged = false;
+  double last_step = HUGE_VAL;
+  for (int it = 0; it < 30 && !converged; ++it) {
+    double F[6], J[6][6];
+    system(w, F, J);
+    double M[6][7];
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) M[i][j] = J[i][j];
+      M[i][6] = -F[i];
+    }
+    bool singular = false;
+    for (int col = 0; col < 6 && !singular; ++col) {
+      int piv = col;
+      for (int r = col + 1; r < 6; ++r)
+        if (std::fabs(M[r][col]) > std::fabs(M[piv][col])) piv = r;
+      if (!(std::fabs(M[piv][col]) > 0)) singular = true;
+      if (singular) break;
+      for (int j = 0; j < 7; ++j) std::swap(M[col][j], M[piv][j]);
+      for (int r = col + 1; r < 6; ++r) {
+        const double f = M[r][col] / M[col][col];
+        for (int j = col; j < 7; ++j) M[r][j] -= f * M[col][j];
+      }
+    }
+    if (singular) break;
+    double d[6], step = 0;
+    for (int i = 5; i >= 0; --i) {
+      double s = M[i][6];
+      for (int j = i + 1; j < 6; ++j) s -= M[i][j] * d[j];
+      d[i] = s / M[i][i];
+      step += std::fabs(d[i]);
+    }
+    for (int i = 0; i < 6; ++i) w[i] += d[i];
+    if (!std::isfinite(step)) break;
+    // Newton stalls at the rounding level of the largest unknown (a far partner, e.g. v = -46, keeps steps of
+    // ~1e-14 in x): measure the step against all six. Only the Krawczyk test below decides anything.
+    double scale = 1;
+    for (double c : w) scale = std::max(scale, std::fabs(c));
+    if (step < 1e-14 * scale) converged = true;
+    last_step = step / scale;
+  }
+  if (!converged && !(last_step < 1e-11)) return false;
+  // Krawczyk in MPFI on a box of radius r around w
+  std::array<I, 6> X{I(prec), I(prec), I(prec), I(prec), I(prec), I(prec)};
+  for (int i = 0; i < 6; ++i) {
+    const double r = 1e-9 * (1 + std::fabs(w[i]));
+    X[i] = I::hull(Rational(w[i] - r), Rational(w[i] + r), prec);
+  }
+  std::array<Partner_equations::Cx, 2> weights_a{Partner_equations::Cx{I(prec), I(prec)}, Partner_equations::Cx{I(prec), I(prec)}};
+  auto weights_b = weights_a;
+  auto interval_system = [&](const std::array<I, 6>& v, std::array<I, 6>* F, std::vector<std::vector<I>>* J) {
+    const I zero = I::point(0, prec);
+    using Cx = Partner_equations::Cx;
+    const Cx zc{zero, zero};
+    const std::array<std::array<Cx, 4>, 2> z{
+        std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[2], complex_pair ? v[4] : zero},
+                          Cx{v[3], complex_pair ? v[5] : zero}},
+        std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[4], zero}, Cx{v[5], zero}}};
+    std::array<Cx, 3> E{zc, zc, zc};
+    std::array<std::array<Cx, 4>, 3> Jc{std::array<Cx, 4>{zc, zc, zc, zc}, std::array<Cx, 4>{zc, zc, zc, zc},
+                                        std::array<Cx, 4>{zc, zc, zc, zc}};
+    for (int s = 0; s < (complex_pair ? 1 : 2); ++s) {
+      eq.evaluate(z[s], E, Jc, s == 0 ? weights_a : weights_b);
+      for (int c = 0; c < 3; ++c) {
+        const int row = complex_pair ? c : 3 * s + c;
+        if (F) {
+          (*F)[row] = E[c].re;
+          if (complex_pair) (*F)[3 + c] = E[c].im;
+        }
+        if (!J) continue;
+        if (complex_pair) {
+          for (int i = 0; i < 2; ++i) {
+            (*J)[c][i] = Jc[c][i].re;
+            (*J)[3 + c][i] = Jc[c][i].im;
+            (*J)[c][2 + i] = Jc[c][2 + i].re;
+            (*J)[3 + c][2 + i] = Jc[c][2 + i].im;
+            (*J)[c][4 + i] = I::point(0, prec) - Jc[c][2 + i].im;
+            (*J)[3 + c][4 + i] = Jc[c][2 + i].re;
+          }
+        } else {
+          for (int i = 0; i < 6; ++i) (*J)[row][i] = zero;
+          (*J)[row][0] = Jc[c][0].re;
+          (*J)[row][1] = Jc[c][1].re;
+          (*J)[row][2 + 2 * s] = Jc[c][2].re;
+          (*J)[row][3 + 2 * s] = Jc[c][3].re;
+        }
+      }
+    }
+  };
+  auto value = [&](const std::array<I, 6>& c, std::array<I, 6>& F) { interval_system(c, &F, nullptr); };
+  auto jacobian = [&](const std::array<I, 6>& Z, std::vector<std::vector<I>>& J) {
+    interval_system(Z, nullptr, &J);
+  };
+  if (!krawczyk_prove<6>(X, value, jacobian)) return false;
+  // the conditions of the header comment, on the proved box
+  interval_system(X, nullptr, nullptr);  // weights over the final box
+  const I bu = I::hull(box.u0, box.u1, prec), bv = I::hull(box.v0, box.v1, prec);
+  if (!X[0].strictly_inside(bu) || !X[1].strictly_inside(bv)) return false;
+  auto nonzero = [](const Partner_equations::Cx& c) { return !c.re.contains_zero() || !c.im.contains_zero(); };
+  if (!nonzero(weights_a[0]) || !nonzero(weights_a[1])) return false;
+  if (complex_pair) {
+    if (X[4].contains_zero() && X[5].contains_zero()) return false;  // sigma != 0: a non-real partner
+    if (eq.self_intersection() && X[2].contains_zero() && X[3].contains_zero() && X[4].contains_zero() &&
+        X[5].contains_zero())
+      return false;
+  } else {
+    if (!nonzero(weights_b[0]) || !nonzero(weights_b[1])) return false;
+    if (!disjoint(X[2], X[4]) && !disjoint(X[3], X[5])) return false;  // two distinct partners
+    if (eq.self_intersection() && ((X[2].contains_zero() && X[3].contains_zero()) ||
+                                   (X[4].contains_zero() && X[5].contains_zero())))
+      return false;  // the trivial partner (0, 0)
+  }
+  return true;
+}
+
 /// \brief Proves that `box` (of the projection plane) contains a point of D = 0 with two branches of distinct
 /// tangents (see the header comment), starting from the approximation `x`. True only with a proof.
 inline bool prove_double_partner_point(const Partner_equations& eq, const Parameter_box& box,
                                        const std::array<double, 2>& x) {
   using C = std::complex<double>;
-  using I = Mpfi_interval;
   const auto partners = numerical_partners(eq, x);
   // candidate pairs: two real partners, or one non-real partner (its conjugate is the other)
   std::vector<std::pair<std::array<C, 2>, std::array<C, 2>>> pairs;
@@ -591,172 +764,8 @@ inline bool prove_double_partner_point(const Partner_equations& eq, const Parame
       if (partners[b][0].imag() == 0 && partners[b][1].imag() == 0) pairs.push_back({partners[a], partners[b]});
   }
   const mpfr_prec_t prec = 192;
-  for (const auto& pr : pairs) {
-    const bool complex_pair = pr.first[0].imag() != 0 || pr.first[1].imag() != 0;
-    // unknowns w = (x1, x2, ya1, ya2, yb1, yb2) (real pair) or (x1, x2, rho1, rho2, sigma1, sigma2) (complex)
-    std::array<double, 6> w{x[0], x[1], pr.first[0].real(), pr.first[1].real(),
-                            complex_pair ? pr.first[0].imag() : pr.second[0].real(),
-                            complex_pair ? pr.first[1].imag() : pr.second[1].real()};
-    // the two partner arguments z_a, z_b of E as complex numbers, for the floating-point Newton refinement
-    auto args = [&](const std::array<double, 6>& v) {
-      std::array<std::array<C, 4>, 2> z;
-      if (complex_pair) {
-        z[0] = {C(v[0]), C(v[1]), C(v[2], v[4]), C(v[3], v[5])};
-        z[1] = {C(v[0]), C(v[1]), C(v[2], -v[4]), C(v[3], -v[5])};
-      } else {
-        z[0] = {C(v[0]), C(v[1]), C(v[2]), C(v[3])};
-        z[1] = {C(v[0]), C(v[1]), C(v[4]), C(v[5])};
-      }
-      return z;
-    };
-    // real 6 x 6 system and its Jacobian (double)
-    auto system = [&](const std::array<double, 6>& v, double F[6], double J[6][6]) {
-      const auto z = args(v);
-      std::array<C, 3> E;
-      std::array<std::array<C, 4>, 3> Jc;
-      if (complex_pair) {
-        eq.evaluate(z[0], E, Jc);
-        for (int c = 0; c < 3; ++c) {
-          F[c] = E[c].real();
-          F[3 + c] = E[c].imag();
-          for (int i = 0; i < 2; ++i) {  // real x_i
-            J[c][i] = Jc[c][i].real();
-            J[3 + c][i] = Jc[c][i].imag();
-          }
-          for (int i = 0; i < 2; ++i) {  // y_i = rho_i + i sigma_i, E holomorphic in y_i (Cauchy-Riemann)
-            J[c][2 + i] = Jc[c][2 + i].real();
-            J[3 + c][2 + i] = Jc[c][2 + i].imag();
-            J[c][4 + i] = -Jc[c][2 + i].imag();
-            J[3 + c][4 + i] = Jc[c][2 + i].real();
-          }
-        }
-      } else {
-        for (int s = 0; s < 2; ++s) {
-          eq.evaluate(z[s], E, Jc);
-          for (int c = 0; c < 3; ++c) {
-            F[3 * s + c] = E[c].real();
-            for (int i = 0; i < 6; ++i) J[3 * s + c][i] = 0;
-            J[3 * s + c][0] = Jc[c][0].real();
-            J[3 * s + c][1] = Jc[c][1].real();
-            J[3 * s + c][2 + 2 * s] = Jc[c][2].real();
-            J[3 * s + c][3 + 2 * s] = Jc[c][3].real();
-          }
-        }
-      }
-    };
-    bool converged = false;
-    double last_step = HUGE_VAL;
-    for (int it = 0; it < 30 && !converged; ++it) {
-      double F[6], J[6][6];
-      system(w, F, J);
-      double M[6][7];
-      for (int i = 0; i < 6; ++i) {
-        for (int j = 0; j < 6; ++j) M[i][j] = J[i][j];
-        M[i][6] = -F[i];
-      }
-      bool singular = false;
-      for (int col = 0; col < 6 && !singular; ++col) {
-        int piv = col;
-        for (int r = col + 1; r < 6; ++r)
-          if (std::fabs(M[r][col]) > std::fabs(M[piv][col])) piv = r;
-        if (!(std::fabs(M[piv][col]) > 0)) singular = true;
-        if (singular) break;
-        for (int j = 0; j < 7; ++j) std::swap(M[col][j], M[piv][j]);
-        for (int r = col + 1; r < 6; ++r) {
-          const double f = M[r][col] / M[col][col];
-          for (int j = col; j < 7; ++j) M[r][j] -= f * M[col][j];
-        }
-      }
-      if (singular) break;
-      double d[6], step = 0;
-      for (int i = 5; i >= 0; --i) {
-        double s = M[i][6];
-        for (int j = i + 1; j < 6; ++j) s -= M[i][j] * d[j];
-        d[i] = s / M[i][i];
-        step += std::fabs(d[i]);
-      }
-      for (int i = 0; i < 6; ++i) w[i] += d[i];
-      if (!std::isfinite(step)) break;
-      // Newton stalls at the rounding level of the largest unknown (a far partner, e.g. v = -46, keeps steps of
-      // ~1e-14 in x): measure the step against all six. Only the Krawczyk test below decides anything.
-      double scale = 1;
-      for (double c : w) scale = std::max(scale, std::fabs(c));
-      if (step < 1e-14 * scale) converged = true;
-      last_step = step / scale;
-    }
-    if (!converged && !(last_step < 1e-11)) continue;
-    // Krawczyk in MPFI on a box of radius r around w
-    std::array<I, 6> X{I(prec), I(prec), I(prec), I(prec), I(prec), I(prec)};
-    for (int i = 0; i < 6; ++i) {
-      const double r = 1e-9 * (1 + std::fabs(w[i]));
-      X[i] = I::hull(Rational(w[i] - r), Rational(w[i] + r), prec);
-    }
-    std::array<Partner_equations::Cx, 2> weights_a{Partner_equations::Cx{I(prec), I(prec)}, Partner_equations::Cx{I(prec), I(prec)}};
-    auto weights_b = weights_a;
-    auto interval_system = [&](const std::array<I, 6>& v, std::array<I, 6>* F, std::vector<std::vector<I>>* J) {
-      const I zero = I::point(0, prec);
-      using Cx = Partner_equations::Cx;
-      const Cx zc{zero, zero};
-      const std::array<std::array<Cx, 4>, 2> z{
-          std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[2], complex_pair ? v[4] : zero},
-                            Cx{v[3], complex_pair ? v[5] : zero}},
-          std::array<Cx, 4>{Cx{v[0], zero}, Cx{v[1], zero}, Cx{v[4], zero}, Cx{v[5], zero}}};
-      std::array<Cx, 3> E{zc, zc, zc};
-      std::array<std::array<Cx, 4>, 3> Jc{std::array<Cx, 4>{zc, zc, zc, zc}, std::array<Cx, 4>{zc, zc, zc, zc},
-                                          std::array<Cx, 4>{zc, zc, zc, zc}};
-      for (int s = 0; s < (complex_pair ? 1 : 2); ++s) {
-        eq.evaluate(z[s], E, Jc, s == 0 ? weights_a : weights_b);
-        for (int c = 0; c < 3; ++c) {
-          const int row = complex_pair ? c : 3 * s + c;
-          if (F) {
-            (*F)[row] = E[c].re;
-            if (complex_pair) (*F)[3 + c] = E[c].im;
-          }
-          if (!J) continue;
-          if (complex_pair) {
-            for (int i = 0; i < 2; ++i) {
-              (*J)[c][i] = Jc[c][i].re;
-              (*J)[3 + c][i] = Jc[c][i].im;
-              (*J)[c][2 + i] = Jc[c][2 + i].re;
-              (*J)[3 + c][2 + i] = Jc[c][2 + i].im;
-              (*J)[c][4 + i] = I::point(0, prec) - Jc[c][2 + i].im;
-              (*J)[3 + c][4 + i] = Jc[c][2 + i].re;
-            }
-          } else {
-            for (int i = 0; i < 6; ++i) (*J)[row][i] = zero;
-            (*J)[row][0] = Jc[c][0].re;
-            (*J)[row][1] = Jc[c][1].re;
-            (*J)[row][2 + 2 * s] = Jc[c][2].re;
-            (*J)[row][3 + 2 * s] = Jc[c][3].re;
-          }
-        }
-      }
-    };
-    auto value = [&](const std::array<I, 6>& c, std::array<I, 6>& F) { interval_system(c, &F, nullptr); };
-    auto jacobian = [&](const std::array<I, 6>& Z, std::vector<std::vector<I>>& J) {
-      interval_system(Z, nullptr, &J);
-    };
-    if (!krawczyk_prove<6>(X, value, jacobian)) continue;
-    // the conditions of the header comment, on the proved box
-    interval_system(X, nullptr, nullptr);  // weights over the final box
-    const I bu = I::hull(box.u0, box.u1, prec), bv = I::hull(box.v0, box.v1, prec);
-    if (!X[0].strictly_inside(bu) || !X[1].strictly_inside(bv)) continue;
-    auto nonzero = [](const Partner_equations::Cx& c) { return !c.re.contains_zero() || !c.im.contains_zero(); };
-    if (!nonzero(weights_a[0]) || !nonzero(weights_a[1])) continue;
-    if (complex_pair) {
-      if (X[4].contains_zero() && X[5].contains_zero()) continue;  // sigma != 0: a non-real partner
-      if (eq.self_intersection() && X[2].contains_zero() && X[3].contains_zero() && X[4].contains_zero() &&
-          X[5].contains_zero())
-        continue;
-    } else {
-      if (!nonzero(weights_b[0]) || !nonzero(weights_b[1])) continue;
-      if (!disjoint(X[2], X[4]) && !disjoint(X[3], X[5])) continue;  // two distinct partners
-      if (eq.self_intersection() && ((X[2].contains_zero() && X[3].contains_zero()) ||
-                                     (X[4].contains_zero() && X[5].contains_zero())))
-        continue;  // the trivial partner (0, 0)
-    }
-    return true;
-  }
+  for (const auto& pr : pairs)
+    if (prove_partner_pair(eq, box, x, pr, prec)) return true;
   return false;
 }
 
