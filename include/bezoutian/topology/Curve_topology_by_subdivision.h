@@ -69,7 +69,7 @@
 // away; splitting alone needs boxes w^2 wide there.
 //
 // Multiple points given by the caller (options.multiple_points: an enclosure K of a point p where D vanishes to
-// order k, e.g. a common zero of all entries of the Bezoutian matrix, internal/matrix_zero_points.h). Their
+// order k, e.g. a common zero of all entries of the Bezoutian matrix, topology/matrix_zero_points.h). Their
 // Hessian vanishes, so (1)-(2) fail there. A box B with K strictly inside is resolved when
 //  (1') blowing p up (internal/multiple_point_blowup.h) proves that the degree-k form of the Taylor expansion
 //       has L real lines, all simple, so that the germ of D = 0 at p is 2L half-branches, and that grad D != 0
@@ -134,7 +134,7 @@ namespace bezoutian {
 
 /// A point p of D = 0 known to the caller to be multiple: the exact p is the only point of `enclosure` where D and
 /// all its partial derivatives of order < `multiplicity` vanish, and they do vanish there (e.g. a common zero of all
-/// entries of the n x n Bezoutian matrix, whose determinant then vanishes to order n: internal/matrix_zero_points.h).
+/// entries of the n x n Bezoutian matrix, whose determinant then vanishes to order n: topology/matrix_zero_points.h).
 /// The subdivision proves the rest (the tangent cone, the half-branches, no other critical point nearby).
 struct Known_multiple_point {
   Parameter_box enclosure;
@@ -159,7 +159,7 @@ struct Subdivision_topology_options {
   /// critical points are proved (exactly); others leave the result not certified.
   std::function<bool(const Parameter_box&, const std::array<double, 2>&)> singular_point_witness;
   /// Optional: true only if it proves that a sub-box holds no genuine point of the locus (e.g. no partner in the
-  /// partner domain, internal/double_partner_witness.h). Such a box is not analysed: it is recorded in
+  /// partner domain, lifting/double_partner_witness.h). Such a box is not analysed: it is recorded in
   /// Curve_topology_in_box::excluded_regions and the arcs that enter it end at phantom_cut vertices.
   std::function<bool(const Parameter_box&)> no_genuine_points;
   int genuine_test_depth = 2;  ///< the test is tried on boxes that are not excluded, from this depth
