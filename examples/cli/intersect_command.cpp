@@ -19,7 +19,10 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
   sub->add_option("--box", o->box, "patches: region of interest u0,u1,v0,v1 of the (u,t) projection");
   sub->add_option("--svg", o->svg, "patches: write a picture of the parameter-space curves");
   sub->add_option("--obj", o->obj, "patches: write the patches and the 3D curves as OBJ");
-  sub->add_option("--tolerance", o->tolerance, "patches: polyline tolerance");
+  sub->add_option("--tolerance", o->tolerance, "patches: precision of the traced points' ordinates (default 1e-9)");
+  sub->add_option("--polyline-tolerance", o->polyline_tolerance,
+                  "patches: refine the lifted polylines until their chords are this close to the curve, in 3D and in "
+                  "both parameter domains (midpoint test; e.g. 1e-3; default 0: off)");
   sub->add_option("--max-degree", o->max_degree, "patches: largest total degree of D for CGAL's curve analysis");
   sub->add_option("--fallback-seconds", o->fallback_seconds,
                   "patches: stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: "

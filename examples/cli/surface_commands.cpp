@@ -93,7 +93,23 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
          proved = json::array(), enclosures = json::array();
     for (std::size_t ei : c.edges) {
       const auto& arc = L.arcs[ei];
-      arcs.push_back({{"from", pts.size()}, {"count", arc.points.size()}, {"undecided_fraction", arc.undecided_fraction}});
+      // every branch of the space curve over the arc: one sheet per partner (the genuine runs), with its points
+      json sheets = json::array();
+      for (const auto& sh : arc.sheets) {
+        json sp = json::array(), s3 = json::array(), sproved = json::array();
+        for (const auto& q : sh.points) {
+          sp.push_back({q.partner[0], q.partner[1]});
+          s3.push_back({q.point_3d[0], q.point_3d[1], q.point_3d[2]});
+          sproved.push_back(q.status_proved);
+        }
+        sheets.push_back({{"first", pts.size() + sh.first}, {"partner_points", sp}, {"points_3d", s3},
+                          {"genuine_proved", sproved}});
+      }
+      arcs.push_back({{"from", pts.size()},
+                      {"count", arc.points.size()},
+                      {"undecided_fraction", arc.undecided_fraction},
+                      {"sheets", sheets},
+                      {"fibre_undecided_fraction", arc.fibre_undecided_fraction}});
       for (const auto& q : arc.points) {
         pts.push_back({q.projection[0], q.projection[1]});
         partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
@@ -367,8 +383,12 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
             << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
   for (std::size_t i = 0; i < T.components.size(); ++i) {
     const auto& c = T.components[i];
-    std::size_t genuine = 0, total = 0, proved = 0;
-    double worst = 0;
+    std::size_t genuine = 0, total = 0, proved = 0, sheets = 0;
+    double worst = 0, fibre_open = 0;
+    for (auto ei : c.edges) {
+      sheets += L.arcs[ei].sheets.size();
+      fibre_open = std::max(fibre_open, L.arcs[ei].fibre_undecided_fraction);
+    }
     for (auto ei : c.edges)
       for (const auto& q : L.arcs[ei].points) {
         ++total;
@@ -379,7 +399,9 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
     std::cout << "  component " << i << ": " << (c.isolated_point ? "isolated point" : c.closed ? "closed loop" : "open arc(s)")
               << ", " << c.edges.size() << " arc(s), " << genuine << "/" << total
               << " traced points with partner in the domain (" << proved << "/" << total
-              << " genuine/phantom status proved), max residual " << worst << "\n";
+              << " genuine/phantom status proved), max residual " << worst << "\n"
+              << "    " << sheets << " sheet(s) (branches of the space curve, one per partner); every partner proved "
+              << "found on " << 100 * (1 - fibre_open) << " % of each arc at least\n";
   }
   if (L.self_intersection) {
     std::cout << "  " << L.pinch_points.size() << " pinch point(s) of the patch in the box"
@@ -539,6 +561,8 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   else
     so.partner_domain = parse_box(domain, "--domain");
   so.tolerance = o.tolerance;
+  if (!(o.polyline_tolerance >= 0)) throw bezoutian::Invalid_input("--polyline-tolerance must be >= 0 (0: off)");
+  so.polyline_tolerance = o.polyline_tolerance;
   so.max_total_degree_for_topology = o.max_degree;
   so.whole_plane_topology = bezoutian::Cgal_curve_analysis{};
   if (!(o.fallback_seconds >= 0)) throw bezoutian::Invalid_input("--fallback-seconds must be >= 0 (0: no limit)");
@@ -598,6 +622,9 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--svg", o->svg, "write the picture of the locus in the (u,v) plane");
   sub->add_option("--obj", o->obj, "write the patch mesh and the 3D double curve");
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
+  sub->add_option("--polyline-tolerance", o->polyline_tolerance,
+                  "refine the lifted polylines until their chords are this close to the curve, in 3D and in the "
+                  "parameter domain (midpoint test; e.g. 1e-3; default 0: off)");
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_option("--fallback-seconds", o->fallback_seconds,

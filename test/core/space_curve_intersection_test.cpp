@@ -8,6 +8,7 @@
 
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/geometry/Curve_problem_generator.h>
+#include <bezoutian/io/Json_format.h>
 
 using namespace bezoutian;
 using Curve2 = Rational_bezier_curve_2<>;
@@ -278,4 +279,26 @@ TEST_CASE("space curves on a common plane: the planar answer (irrational points)
     }
   CHECK(irrational >= 5);
   CHECK(settled >= 6);  // shape bases of degree n^2 = 4, 9 (larger ones need too many primes: exact path)
+}
+
+TEST_CASE("two circles in perpendicular planes touching at a point: a tangency of multiplicity 2",
+          "[space][tangent]") {
+  // x = 1, (y, z) = (1 - a^2, 2a)/(1 + a^2) and y = 1, (x, z) = (1 - b^2, 2b)/(1 + b^2), a, b = (2s - 1)/2: both
+  // through (1, 1, 0) at s = 1/2 with tangent (0, 0, 1). The projection to (x, y) has a double root in each
+  // parameter alone, so its pair of equations degenerates on every shear; the multiplicity is that of the
+  // other projections (the curves' own: two circles of equal radius touching, 2).
+  const std::string json = R"({"curves": [
+    {"basis": "power", "parameter": "s", "degree": 2, "x": "1+(2*s-1)*(2*s-1)/4", "y": "1-(2*s-1)*(2*s-1)/4",
+     "z": "2*s-1", "w": "1+(2*s-1)*(2*s-1)/4"},
+    {"basis": "power", "parameter": "s", "degree": 2, "x": "1-(2*s-1)*(2*s-1)/4", "y": "1+(2*s-1)*(2*s-1)/4",
+     "z": "2*s-1", "w": "1+(2*s-1)*(2*s-1)/4"}]})";
+  const auto doc = bezoutian::io::read_json(json, "circles");
+  REQUIRE(doc.curves_3.size() == 2);
+  const auto r = bezoutian::intersect_curves(doc.curves_3[0], doc.curves_3[1]);
+  REQUIRE(r.points.size() == 1);
+  CHECK(r.points[0].s == bezoutian::Algebraic_real(bezoutian::Rational(1, 2)));
+  CHECK(r.points[0].t == bezoutian::Algebraic_real(bezoutian::Rational(1, 2)));
+  CHECK(r.points[0].tangent);
+  CHECK(r.points[0].multiplicity == 2);
+  CHECK(r.points[0].kind == bezoutian::Curve_intersection_kind::tangent);
 }

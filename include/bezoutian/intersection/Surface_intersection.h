@@ -26,6 +26,8 @@
 #include <bezoutian/lifting/floating_null_vector.h>
 #include <bezoutian/topology/matrix_zero_points.h>
 #include <bezoutian/lifting/partner_domain_crossings.h>
+#include <bezoutian/lifting/arc_refinement.h>
+#include <bezoutian/lifting/partner_sheets.h>
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/elimination/Implicit_equation.h>
 #include <bezoutian/geometry/Rational_bezier_patch.h>
@@ -36,6 +38,7 @@
 #include <string>
 #include <limits>
 #include <optional>
+#include <memory>
 #include <vector>
 
 namespace bezoutian {
@@ -68,6 +71,22 @@ struct Surface_intersection_options {
   /// Prove the genuine / phantom status along the arcs (lifting/certified_lifting.h; subdivision topologies
   /// only). It roughly doubles the time of a locus; off, the status is floating point only (status_proved false).
   bool certify_lifting = true;
+  /// Complete lifting (lifting/partner_sheets.h): every partner of every traced point in the partner domain, as
+  /// the sheets of each arc (Locus_arc::sheets), proved to be all of them where Locus_arc::fibre_undecided_fraction
+  /// is 0. Off: the arcs carry one partner per point (the kernel's) and no sheets.
+  bool complete_lifting = true;
+  /// Adaptive refinement of the arcs that carry sheets (lifting/arc_refinement.h): a span is halved while the
+  /// lifted curve strays from its chord by more than this at the span's midpoint, in 3D or in either parameter
+  /// domain (a floating-point midpoint test, not a proved bound), and where a sheet begins or ends inside it. The
+  /// refinement is off by default (0): next to seams, where a partner runs along the domain's boundary, it can add
+  /// points whose status is not proved; 1e-3 is fine enough to draw a patch of unit size.
+  double polyline_tolerance = 0;
+  /// At most this many points added by the refinement per locus.
+  std::size_t max_refinement_points = 20000;
+  /// At most this many traced points per locus get their complete fibre (every partner, about 1 ms each on
+  /// bicubic pairs): the arcs where the kernel's partner alone is not proved to be every partner, in order, while
+  /// the count lasts; the others keep Locus_arc::fibre_undecided_fraction > 0.
+  std::size_t max_complete_fibres = 2000;
   /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus, and as
   /// many again for the fallback on spans without a followed partner (lifting/certified_lifting.h); the spans
   /// left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
@@ -635,7 +654,118 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   }
 }
 
-} // namespace internal
+// Complete lifting (lifting/partner_sheets.h): every partner of every traced point, chained into the sheets of
+// each arc, and the proof span by span that they are all. An arc proved phantom everywhere (no genuine point,
+// nothing undecided) has no sheet, proved. A traced point that the kernel lifted to a partner outside the domain
+// while a sheet has one inside is replaced by the sheet's point (it is genuine).
+template <class Lift>
+void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o, Lift lift_point) {
+  if (L.topology_method != "subdivision" || !o.complete_lifting) return;
+  Exclusion_budget budget;
+  budget.left = budget.fallback_left = o.lifting_exclusion_budget;
+  std::unique_ptr<Double_curve_equation> D_double;
+  std::size_t inserted = 0, full_fibres = 0;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    const Curve_topology_edge& e = L.topology.edges[k];
+    if (arc.points.size() != e.polyline.size()) continue;
+    bool any_genuine = false;
+    for (const Locus_point& q : arc.points) any_genuine = any_genuine || q.genuine;
+    if (!any_genuine && arc.undecided_fraction == 0) {  // phantom at every point of the exact arc, proved
+      arc.fibre_undecided_fraction = 0;
+      continue;
+    }
+    // Two passes: first the kernel's partner alone at each point (cheap), which the span proofs often show to be
+    // the only one; where they do not, every partner (numerical_partners) at every point.
+    auto kernel_fibre = [&](const std::array<double, 2>& x, const Locus_point& q) {
+      std::vector<std::array<double, 2>> F;
+      const bool usable = verified(q) && !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9);
+      const double margin = 0.25 * std::max(CGAL::to_double(o.partner_domain.u1 - o.partner_domain.u0),
+                                            CGAL::to_double(o.partner_domain.v1 - o.partner_domain.v0));
+      if (usable && partner_in_domain(eq, o.partner_domain, o.partner_domain_unbounded, x, q.partner, margin))
+        F.push_back(q.partner);
+      return F;
+    };
+    auto attempt = [&](bool every_partner) {
+      std::vector<std::vector<std::array<double, 2>>> fibres;
+      for (std::size_t i = 0; i < e.polyline.size(); ++i) {
+        const Locus_point& q = arc.points[i];
+        const bool usable = verified(q) && !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9);
+        fibres.push_back(every_partner ? fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, e.polyline[i],
+                                                        usable ? &q.partner : nullptr)
+                                       : kernel_fibre(e.polyline[i], q));
+      }
+      if (o.polyline_tolerance > 0 && inserted < o.max_refinement_points) {
+        Arc_refinement_model model;
+        model.fibre = [&](const std::array<double, 2>& x) {
+          return every_partner ? fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, x, nullptr)
+                               : kernel_fibre(x, lift_point(x[0], x[1], nullptr));
+        };
+        model.lift = [&](const std::array<double, 2>& x, const std::array<double, 2>& y) {
+          const Locus_point q = lift_point(x[0], x[1], &y);
+          return std::array<double, 7>{q.first[0], q.first[1], q.second[0], q.second[1],
+                                       q.point_3d[0], q.point_3d[1], q.point_3d[2]};
+        };
+        model.solve = [&](int axis, double t, std::array<double, 3>& w) { return solve_partner_equations(eq, axis, t, w); };
+        model.inside = [&](const std::array<double, 2>& x, const std::array<double, 2>& y) {
+          return partner_in_domain(eq, o.partner_domain, o.partner_domain_unbounded, x, y, 1e-12);
+        };
+        model.insert = [&](std::size_t i, const std::array<double, 2>& x, const std::vector<std::array<double, 2>>& F) {
+          // lifted from a partner in the domain if it has one (the kernel's ratio can run away near a seam)
+          const std::array<double, 2>* seed = F.empty() ? nullptr : &F[0];
+          for (const auto& y : F)
+            if (partner_in_domain(eq, o.partner_domain, o.partner_domain_unbounded, x, y, 1e-12)) seed = &y;
+          arc.points.insert(arc.points.begin() + std::ptrdiff_t(i + 1), lift_point(x[0], x[1], seed));
+          for (Locus_split_point& sp : L.split_points)
+            if (sp.arc == k && sp.index > i) ++sp.index;
+        };
+        if (!D_double) D_double.reset(new Double_curve_equation(L.equation.square_free));
+        inserted += refine_arc(L.topology.edges[k], fibres, *D_double, model, o.polyline_tolerance,
+                               o.max_refinement_points - inserted);
+      }
+      return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget);
+    };
+    Edge_sheets es = attempt(false);
+    if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {
+      full_fibres += e.polyline.size();
+      // both are proofs of what they claim: the one that leaves less undecided is kept (extra partners near the
+      // domain's boundary can break spans that the kernel's partner alone proved)
+      // (the first pass's sheets index the polyline as it was: kept only if the second added no point)
+      const std::size_t before = e.polyline.size();
+      Edge_sheets every = attempt(true);
+      if (every.undecided_fraction <= es.undecided_fraction || e.polyline.size() != before) es = std::move(every);
+    }
+    arc.fibre_undecided_fraction = es.undecided_fraction;
+    // (the spans left open by either proof are a subset of those left open by each)
+    arc.undecided_fraction = std::min(arc.undecided_fraction, es.status_undecided_fraction);
+    for (const Partner_sheet& S : es.sheets) {
+      Locus_sheet run;
+      auto flush = [&]() {
+        if (!run.points.empty()) arc.sheets.push_back(std::move(run));
+        run = Locus_sheet{};
+      };
+      for (std::size_t j = 0; j < S.partner.size(); ++j) {
+        const std::size_t i = S.first + j;
+        Locus_point q = lift_point(e.polyline[i][0], e.polyline[i][1], &S.partner[j]);
+        if (!q.genuine) {
+          flush();
+          continue;
+        }
+        if (S.genuine_proved[j]) {
+          q.status_proved = true;
+          q.partner_enclosure = {{{S.enclosure[j][0].lo, S.enclosure[j][0].hi}, {S.enclosure[j][1].lo, S.enclosure[j][1].hi}}};
+        }
+        if (run.points.empty()) run.first = i;
+        run.points.push_back(q);
+        const Locus_point& p = arc.points[i];
+        if ((!p.genuine && !p.status_proved) || (!p.status_proved && q.status_proved)) arc.points[i] = q;
+      }
+      flush();
+    }
+  }
+}
+
+}  // namespace internal
 
 /// \brief Self-intersection locus of `patch` (Theorems 4, 5): D(u,v), its certified topology in `o.box`, and
 /// every traced point lifted to the two parameter points (u, v+k) and (u+l, v) with the same image.
@@ -736,7 +866,12 @@ inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rationa
   describe_edge_lines(L, o, phi, &psi, lift_point);
   if (!traced) return L;
   lift_arcs(L, lift_point);
-  for (Locus_arc& arc : L.arcs) arc.undecided_fraction = 0;
+  // one sheet per arc, all partners: Phi(u, v) = Psi(s, t) gives pi Psi(u, v) = pi Psi(s, t), so (s, t) = (u, v)
+  for (Locus_arc& arc : L.arcs) {
+    arc.undecided_fraction = 0;
+    arc.fibre_undecided_fraction = 0;
+    if (!arc.points.empty()) arc.sheets.push_back(Locus_sheet{0, arc.points});
+  }
   mark_ends_on_edge_lines(L, o, phi, &psi);
   return L;
 }
@@ -817,6 +952,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
+  internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point);
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
@@ -982,6 +1118,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   return L;
 }

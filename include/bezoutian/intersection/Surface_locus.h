@@ -41,13 +41,29 @@ struct Locus_point {
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()}}};
 };
 
+/// A branch of the space curve over an arc of D = 0: one partner followed continuously along consecutive traced
+/// points of the arc, all genuine (both parameter points in their domains). Where two branches share a projection
+/// (two cylinders crossing: z and -z over one (u, t)) the arc has two sheets (lifting/partner_sheets.h).
+struct Locus_sheet {
+  std::size_t first = 0;            ///< index in Locus_arc::points of its first point
+  std::vector<Locus_point> points;  ///< over Locus_arc::points[first], [first + 1], ...: same projection, this partner
+};
+
 /// One arc of D = 0 inside the box, traced.
 struct Locus_arc {
   std::size_t source = 0, target = 0;  ///< vertices of the certified topology
+  /// The traced points, each with one partner (genuine if it has one in the partner domain); every partner of
+  /// every point is in `sheets`.
   std::vector<Locus_point> points;
   /// Share of the arc (by length of its graph coordinate) whose genuine / phantom status is not proved: 0 when
   /// every point of the exact arc, not only the traced ones, is proved genuine or phantom; 1 if nothing is.
   double undecided_fraction = 1;
+  /// Every branch of the space curve over this arc (complete lifting): the genuine runs of every partner.
+  std::vector<Locus_sheet> sheets;
+  /// Share of the arc (graph-coordinate length) where `sheets` is not proved to hold every partner in the partner
+  /// domain: 0 when the sheets are proved to be all of them (a Krawczyk test per sheet and an exclusion of every
+  /// other partner, span by span), 1 if nothing is proved. Where it is not 0, a branch may be missing there.
+  double fibre_undecided_fraction = 1;
 };
 
 /// Two patches in contact along their boundaries (the teapot's patches are glued edge to edge): a piece of a

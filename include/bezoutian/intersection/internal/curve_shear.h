@@ -49,34 +49,44 @@ bool Curve_intersection_engine<D>::sheared_elimination(const std::vector<P2>& Fs
 }
 
 // Intersection multiplicity of the rational solution (a, b) of F = 0: the multiplicity of u0 = a + lambda b as a
-// root of the sheared resultant, for a shear that leaves (a, b) alone on its line u = u0 (S11(u0) != 0: the gcd
-// of the pair on that line has degree 1; a leading coefficient survives: no solution at infinity).
+// root of the sheared resultant of a pair of F, for a shear and a pair that leave (a, b) alone on its line u = u0
+// (S11(u0) != 0: the gcd of the pair on that line has degree 1; a leading coefficient survives: no solution at
+// infinity). In the plane F is the pair itself. In space each pair is a projection of the two curves, whose
+// multiplicity at the point is at least the curves' own (the ideal of the pair lies in that of F) and equal to it
+// for a generic projection; a special one may even fail the conditions on every shear (two circles in the planes
+// x = 1 and y = 1 touching at (1, 1, 0): the pair (x, y) has a double root in t alone, so its gcd on every line
+// has degree 2). So every pair is tried and the least multiplicity is the answer.
 template <int D>
 int Curve_intersection_engine<D>::local_multiplicity(const std::vector<P2>& F, const Rational& a, const Rational& b) const {
+  int best = 0;
   for (int lambda = 1; lambda <= 12; ++lambda) {
-    Elimination e;
-    if (!sheared_elimination(sheared_system(F, lambda), e)) continue;
     const Rational u0 = a + Rational(lambda) * b;
     auto value = [&](const P1& f) {
       Rational r(0);
       for (int i = f.degree(); i >= 0; --i) r = r * u0 + Rational(f[i]);
       return r;
     };
-    if (CGAL::is_zero(value(e.S11))) continue;
-    if (CGAL::is_zero(value(e.G1[t_degree(e.G1)])) && CGAL::is_zero(value(e.G2[t_degree(e.G2)]))) continue;
-    const P1 lin(-u0.numerator(), u0.denominator());  // den u - num
-    P1 R = e.R;
-    int m = 0;
-    for (;;) {
-      P1 q, r;
-      Integer d;
-      P1::pseudo_division(R, lin, q, r, d);
-      if (!CGAL::is_zero(r)) break;
-      R = q;
-      ++m;
+    for (const auto& pr : candidate_pairs(sheared_system(F, lambda))) {
+      const Elimination e = eliminate(pr.first, pr.second);
+      if (!e.ok || CGAL::is_zero(value(e.S11))) continue;
+      if (CGAL::is_zero(value(e.G1[t_degree(e.G1)])) && CGAL::is_zero(value(e.G2[t_degree(e.G2)]))) continue;
+      const P1 lin(-u0.numerator(), u0.denominator());  // den u - num
+      P1 R = e.R;
+      int m = 0;
+      for (;;) {
+        P1 q, r;
+        Integer d;
+        P1::pseudo_division(R, lin, q, r, d);
+        if (!CGAL::is_zero(r)) break;
+        R = q;
+        ++m;
+      }
+      if (best == 0 || m < best) best = m;
+      if (F.size() == 2 || best <= 2) return best;  // (a tangency has multiplicity >= 2)
     }
-    return m;
+    if (best > 0) return best;
   }
+  if (best > 0) return best;
   throw Error("intersect_curves: no separating shear found for the multiplicity of a tangency");
 }
 

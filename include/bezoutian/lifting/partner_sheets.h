@@ -1,0 +1,430 @@
+// Complete lifting: every partner of every point of an arc of D = 0, and the proof that there are no others.
+//
+// A point x of D = 0 may have several partners y in the partner domain (buse-elkadi-galligo-2008 §4 follows one,
+// the ratio of entries of one kernel vector of B). Along a whole arc this happens whenever two branches of the
+// space curve share one projection: two cylinders crossing (z and -z over one (u, t)), a sphere cut by a plane
+// ((x, y, z) and (x, -y, z)), two orthogonal extrusions. Each branch is a sheet: a partner y(x) followed
+// continuously along the arc.
+//
+// Floating point finds the sheets: at every traced point all real partners (numerical_partners: the roots of a
+// resultant of two partner equations, polished on all three), chained from point to point by nearest
+// prediction. The proof is per span T of a graph piece (D = 0 a graph over the axis coordinate t in its cell):
+//  1. each sheet's zero curve is proved unique and continuous in a box W_j over T, and to be the arc with a
+//     partner (parametric Krawczyk and the anchor, partner_span_proofs.h: prove_zero_curve, zero_curve_anchored);
+//     every zero of E(t, .) in W_j lies in its image K_j;
+//  2. no point of T x V has a partner in the domain outside the union of the W_j (no_genuine_partner started from
+//     a cover of the complement of the W_j's interiors), V the intersection of the K_j's ranges of the other
+//     coordinate, which holds the arc points over T (each K_j does).
+// A partner y of an arc point (t, g(t)), t in T, in the domain lies in some W_j by 2; (g(t), y) is then in W_j (by
+// 1, g(t) is in K_j's range), so y is sheet j's partner by uniqueness: the sheets are every partner over T.
+// A span without any sheet is proved empty by the strip exclusion (certified_lifting.h: exclude_strips). What is
+// not proved (a Jacobian too ill-conditioned, where two sheets meet; half-branches inside singular boxes) is
+// counted in Edge_sheets::undecided_fraction, never guessed.
+#ifndef BEZOUTIAN_LIFTING_PARTNER_SHEETS_H
+#define BEZOUTIAN_LIFTING_PARTNER_SHEETS_H
+
+#include <bezoutian/lifting/certified_lifting.h>
+#include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/internal/partner_span_proofs.h>
+#include <bezoutian/topology/Curve_topology.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+/// One branch of the space curve over an arc: a partner followed along consecutive polyline points.
+struct Partner_sheet {
+  std::size_t first = 0;                        ///< polyline index of its first point
+  std::vector<std::array<double, 2>> partner;   ///< floating point, for polyline points first, first + 1, ...
+  /// per point: a box proved to hold the partner of the exact arc point (NaN bounds where not proved)
+  std::vector<std::array<Double_interval, 2>> enclosure;
+  /// per point: the enclosure puts both patch points inside the partner domain (the point is genuine, proved)
+  std::vector<char> genuine_proved;
+  std::size_t last() const { return first + partner.size() - 1; }
+};
+
+/// The sheets of an edge and the share of it (by graph-coordinate length) whose fibre is not proved complete.
+struct Edge_sheets {
+  std::vector<Partner_sheet> sheets;
+  double undecided_fraction = 1;
+  /// the share whose genuine / phantom status this proof leaves open: a complete span is phantom without sheets,
+  /// genuine with a sheet proved inside the domain over the whole span, else open
+  double status_undecided_fraction = 1;
+};
+
+/// Whether the partner y of the point x puts both patch points in `domain` widened by `margin` on every side.
+inline bool partner_in_domain(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                              const std::array<double, 2>& x, const std::array<double, 2>& y, double margin) {
+  if (unbounded) return true;
+  std::array<double, 2> P, Q;
+  eq.points(std::array<double, 4>{x[0], x[1], y[0], y[1]}, P, Q);
+  const double u0 = CGAL::to_double(domain.u0) - margin, u1 = CGAL::to_double(domain.u1) + margin,
+               v0 = CGAL::to_double(domain.v0) - margin, v1 = CGAL::to_double(domain.v1) + margin;
+  return u0 <= P[0] && P[0] <= u1 && v0 <= P[1] && P[1] <= v1 && u0 <= Q[0] && Q[0] <= u1 && v0 <= Q[1] && Q[1] <= v1;
+}
+
+/// The real partners of x with both patch points in the domain widened by a quarter of its size (the sheets are
+/// followed a little beyond the domain, so that a sheet leaving it is one zero curve on both sides of the
+/// boundary), floating point; `known` (the kernel's partner, if it solves the equations) is added if missing.
+inline std::vector<std::array<double, 2>> fibre_partners(const Partner_equations& eq, const Parameter_box& domain,
+                                                         bool unbounded, const std::array<double, 2>& x,
+                                                         const std::array<double, 2>* known) {
+  const double margin =
+      unbounded ? 0 : 0.25 * std::max(CGAL::to_double(domain.u1 - domain.u0), CGAL::to_double(domain.v1 - domain.v0));
+  std::vector<std::array<double, 2>> out;
+  for (const auto& y : numerical_partners(eq, x)) {
+    if (y[0].imag() != 0 || y[1].imag() != 0) continue;
+    const std::array<double, 2> r{y[0].real(), y[1].real()};
+    if (partner_in_domain(eq, domain, unbounded, x, r, margin)) out.push_back(r);
+  }
+  if (known && partner_in_domain(eq, domain, unbounded, x, *known, margin)) {
+    bool seen = false;
+    for (const auto& y : out) seen = seen || std::fabs(y[0] - (*known)[0]) + std::fabs(y[1] - (*known)[1]) < 1e-6;
+    if (!seen) out.push_back(*known);
+  }
+  return out;
+}
+
+/// Newton's method on the three partner equations E(z) = 0 with the graph coordinate z_axis = t fixed, in the
+/// unknowns w = (the other coordinate, y1, y2), from w; true if the last step is below 1e-13 (relative).
+inline bool solve_partner_equations(const Partner_equations& eq, int axis, double t, std::array<double, 3>& w) {
+  using C = std::complex<double>;
+  const int q[3] = {1 - axis, 2, 3};
+  for (int it = 0; it < 20; ++it) {
+    std::array<C, 4> z;
+    z[std::size_t(axis)] = t;
+    for (int c = 0; c < 3; ++c) z[std::size_t(q[c])] = w[std::size_t(c)];
+    std::array<C, 3> E;
+    std::array<std::array<C, 4>, 3> J;
+    eq.evaluate(z, E, J);
+    double A[3][3], Ai[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) A[r][c] = J[std::size_t(r)][std::size_t(q[c])].real();
+    if (!invert_3x3(A, Ai)) return false;
+    double step = 0;
+    for (int r = 0; r < 3; ++r) {
+      const double d = Ai[r][0] * E[0].real() + Ai[r][1] * E[1].real() + Ai[r][2] * E[2].real();
+      w[std::size_t(r)] -= d;
+      step += std::fabs(d);
+    }
+    if (!std::isfinite(step) || step > 1) return false;
+    if (step <= 1e-13 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2]))) return true;
+  }
+  return false;
+}
+
+/// Chains the fibres of consecutive polyline points into sheets: each sheet ending at the previous point takes the
+/// nearest unclaimed partner to its prediction (linear from its last two points), if nearer than a quarter plus
+/// four times its last step; partners left over start new sheets. (Floating point: a wrong chain only makes its
+/// span proofs fail.)
+inline std::vector<Partner_sheet> chain_sheets(const std::vector<std::vector<std::array<double, 2>>>& fibres) {
+  std::vector<Partner_sheet> sheets;
+  std::vector<std::size_t> open;  // sheets ending at the previous point
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::array<Double_interval, 2> none{Double_interval{nan, nan}, Double_interval{nan, nan}};
+  for (std::size_t i = 0; i < fibres.size(); ++i) {
+    const auto& F = fibres[i];
+    std::vector<bool> claimed(F.size(), false);
+    struct Candidate {
+      double cost;
+      std::size_t sheet, partner;
+    };
+    std::vector<Candidate> cand;
+    for (std::size_t s : open) {
+      const Partner_sheet& S = sheets[s];
+      const std::size_t n = S.partner.size();
+      std::array<double, 2> p = S.partner[n - 1];
+      double step = 0;
+      if (n >= 2) {
+        for (int c = 0; c < 2; ++c) {
+          const double d = S.partner[n - 1][c] - S.partner[n - 2][c];
+          p[c] += d;
+          step += std::fabs(d);
+        }
+      }
+      for (std::size_t k = 0; k < F.size(); ++k) {
+        const double cost = std::fabs(F[k][0] - p[0]) + std::fabs(F[k][1] - p[1]);
+        if (n == 1 || cost < 0.25 + 4 * step) cand.push_back({cost, s, k});
+      }
+    }
+    std::sort(cand.begin(), cand.end(), [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
+    std::vector<std::size_t> next;
+    std::vector<bool> continued(sheets.size(), false);
+    for (const Candidate& c : cand) {
+      if (claimed[c.partner] || continued[c.sheet]) continue;
+      claimed[c.partner] = continued[c.sheet] = true;
+      sheets[c.sheet].partner.push_back(F[c.partner]);
+      sheets[c.sheet].enclosure.push_back(none);
+      sheets[c.sheet].genuine_proved.push_back(0);
+      next.push_back(c.sheet);
+    }
+    for (std::size_t k = 0; k < F.size(); ++k) {
+      if (claimed[k]) continue;
+      Partner_sheet S;
+      S.first = i;
+      S.partner.push_back(F[k]);
+      S.enclosure.push_back(none);
+      S.genuine_proved.push_back(0);
+      next.push_back(sheets.size());
+      sheets.push_back(std::move(S));
+    }
+    open = next;
+  }
+  // Where two sheets meet (their partners coincide at a traced point: the two branches of the space curve cross
+  // there) the fibre holds the common partner once, so one sheet stops short of it or starts after it. A sheet is
+  // extended by the neighbouring point's partner nearest to its prediction (the same tolerance as above); the
+  // span proofs decide nothing there (two zero curves meet), but the sheets reach the crossing. Sheets of one point
+  // that another sheet now reaches are dropped.
+  auto extend = [&](Partner_sheet& S, bool at_start) {
+    const std::size_t n = S.partner.size();
+    const std::size_t i = at_start ? S.first : S.last();
+    if (at_start ? i == 0 : i + 1 >= fibres.size()) return;
+    const auto& F = fibres[at_start ? i - 1 : i + 1];
+    std::array<double, 2> p = at_start ? S.partner[0] : S.partner[n - 1];
+    double step = 0;
+    if (n >= 2) {
+      const auto& a = at_start ? S.partner[0] : S.partner[n - 1];
+      const auto& b = at_start ? S.partner[1] : S.partner[n - 2];
+      for (int c = 0; c < 2; ++c) p[c] += a[c] - b[c], step += std::fabs(a[c] - b[c]);
+    }
+    double best = 0.25 + 4 * step;
+    std::size_t pick = F.size();
+    for (std::size_t k = 0; k < F.size(); ++k) {
+      const double cost = std::fabs(F[k][0] - p[0]) + std::fabs(F[k][1] - p[1]);
+      if (cost < best) best = cost, pick = k;
+    }
+    if (pick == F.size()) return;
+    if (at_start) {
+      S.partner.insert(S.partner.begin(), F[pick]);
+      S.enclosure.insert(S.enclosure.begin(), none);
+      S.genuine_proved.insert(S.genuine_proved.begin(), 0);
+      --S.first;
+    } else {
+      S.partner.push_back(F[pick]);
+      S.enclosure.push_back(none);
+      S.genuine_proved.push_back(0);
+    }
+  };
+  const std::size_t count = sheets.size();
+  for (std::size_t s = 0; s < count; ++s) {
+    if (sheets[s].partner.size() < 2) continue;
+    extend(sheets[s], true);
+    extend(sheets[s], false);
+  }
+  std::vector<Partner_sheet> kept;
+  for (Partner_sheet& S : sheets) {
+    bool reached = false;
+    if (S.partner.size() == 1)
+      for (const Partner_sheet& R : sheets)
+        if (R.partner.size() >= 2 && R.first <= S.first && S.first <= R.last()) {
+          const auto& y = R.partner[S.first - R.first];
+          reached = reached || std::fabs(y[0] - S.partner[0][0]) + std::fabs(y[1] - S.partner[0][1]) < 1e-6;
+        }
+    if (!reached) kept.push_back(std::move(S));
+  }
+  return kept;
+}
+
+/// The closed boxes covering `range` minus the interiors of `holes` (each difference of a box and a hole: at most
+/// four boxes, left, right, below and above the hole).
+inline std::vector<std::array<Double_interval, 2>> complement_cover(const std::array<Double_interval, 2>& range,
+                                                                    const std::vector<std::array<Double_interval, 2>>& holes) {
+  using D = Double_interval;
+  std::vector<std::array<D, 2>> cover{range};
+  for (const auto& h : holes) {
+    std::vector<std::array<D, 2>> next;
+    for (const auto& r : cover) {
+      const bool meets = r[0].lo < h[0].hi && h[0].lo < r[0].hi && r[1].lo < h[1].hi && h[1].lo < r[1].hi;
+      if (!meets) {
+        next.push_back(r);
+        continue;
+      }
+      if (r[0].lo < h[0].lo) next.push_back({D{r[0].lo, h[0].lo}, r[1]});
+      if (h[0].hi < r[0].hi) next.push_back({D{h[0].hi, r[0].hi}, r[1]});
+      const D mid{std::max(r[0].lo, h[0].lo), std::min(r[0].hi, h[0].hi)};
+      if (r[1].lo < h[1].lo) next.push_back({mid, D{r[1].lo, h[1].lo}});
+      if (h[1].hi < r[1].hi) next.push_back({mid, D{h[1].hi, r[1].hi}});
+    }
+    cover = std::move(next);
+  }
+  return cover;
+}
+
+/// The span proof of the header comment on T for the sheets `active` (with floating-point partners ya, yb at the
+/// span's ends, and the other coordinate oa, ob there): true if every sheet's zero curve is proved over T and
+/// every other partner in the domain is excluded; the sheets' partner enclosures over T go to `K`.
+inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_box& domain, const Parameter_box& cell,
+                                 int axis, const Double_interval& T, double oa, double ob,
+                                 const std::vector<std::array<std::array<double, 2>, 2>>& ends,
+                                 std::vector<std::array<Double_interval, 3>>& K, Exclusion_budget& budget) {
+  using D = Double_interval;
+  const double len = T.hi - T.lo;
+  const double room = 0.5 * std::fabs(ob - oa) + 0.25 * len + 1e-12;
+  const D V0{std::min(oa, ob) - room, std::max(oa, ob) + room};
+  std::vector<std::array<D, 2>> holes;
+  K.assign(ends.size(), std::array<D, 3>{});
+  D V = V0;
+  for (std::size_t j = 0; j < ends.size(); ++j) {
+    const auto& y0 = ends[j][0];
+    const auto& y1 = ends[j][1];
+    std::array<D, 3> W{V0, D{}, D{}}, P;
+    for (int c = 0; c < 2; ++c) {
+      const double r = 0.5 * std::fabs(y1[c] - y0[c]) + 0.25 * len + 1e-9 * (1 + std::fabs(y0[c]));
+      W[1 + c] = D{std::min(y0[c], y1[c]) - r, std::max(y0[c], y1[c]) + r};
+    }
+    const bool predicted = predict_partner_box(eq, axis, T, {0.5 * (oa + ob), 0.5 * (y0[0] + y1[0]), 0.5 * (y0[1] + y1[1])}, P);
+    if (predicted) W = P;
+    // A predicted box thin in one coordinate (a graph whose other coordinate hardly moves, e.g. a line u = c) may
+    // be thinner than the operator's overestimation there: then a box of more even widths
+    bool proved = prove_zero_curve(eq, axis, T, W, K[j]);
+    if (!proved && predicted) {
+      double rmax = 0;
+      for (int c = 0; c < 3; ++c) rmax = std::max(rmax, 0.5 * (P[c].hi - P[c].lo));
+      for (int c = 0; c < 3; ++c) {
+        const double m = P[c].mid(), r = std::max(2 * 0.5 * (P[c].hi - P[c].lo), 0.5 * rmax);
+        W[c] = D{m - r, m + r};
+      }
+      proved = prove_zero_curve(eq, axis, T, W, K[j]);
+    }
+    if (!proved || !zero_curve_anchored(eq, axis, T, W, cell)) return false;
+    if (eq.self_intersection() && K[j][1].contains_zero() && K[j][2].contains_zero()) return false;
+    holes.push_back({W[1], W[2]});
+    V = D{std::max(V.lo, K[j][0].lo), std::min(V.hi, K[j][0].hi)};
+    if (!(V.lo <= V.hi)) return false;
+  }
+  if (ends.empty()) V = V0;
+  if (!budget.take()) return false;
+  const Parameter_box box = axis == 0 ? Parameter_box{Rational(T.lo), Rational(T.hi), Rational(V.lo), Rational(V.hi)}
+                                      : Parameter_box{Rational(V.lo), Rational(V.hi), Rational(T.lo), Rational(T.hi)};
+  const double big = 1e300;
+  const std::vector<std::array<D, 2>> cover = complement_cover({D{-big, big}, D{-big, big}}, holes);
+  return no_genuine_partner(eq, box, domain, 1024, &cover);
+}
+
+/// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
+/// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
+/// while unproved). Sheet points outside the domain are kept (the caller reports the genuine runs).
+inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
+                                         const Curve_topology_edge& e,
+                                         const std::vector<std::vector<std::array<double, 2>>>& fibres,
+                                         Exclusion_budget& budget) {
+  using D = Double_interval;
+  Edge_sheets out;
+  out.sheets = chain_sheets(fibres);
+  const std::size_t n = e.polyline.size();
+  double total = 0, undecided = 0, status_open = 0;
+  for (const Curve_topology_piece& pc : e.pieces) {
+    if (pc.last >= n || pc.first >= pc.last) continue;
+    if (pc.graph_axis < 0 || unbounded) {  // a half-branch inside a singular box: not proved here
+      const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
+                         std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
+      total += len;
+      undecided += len;
+      status_open += len;
+      continue;
+    }
+    const int axis = pc.graph_axis, other = 1 - axis;
+    auto coord = [&](std::size_t i, int c) {
+      if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
+      if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+      return D{e.polyline[i][c], e.polyline[i][c]};
+    };
+    for (std::size_t i = pc.first; i < pc.last; ++i) {
+      const D a = coord(i, axis), b = coord(i + 1, axis);
+      const D T{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+      total += T.hi - T.lo;
+      // the sheets over the span: those at both of its ends; a sheet at one end only makes it unprovable
+      std::vector<std::size_t> active;
+      bool broken = false;
+      for (std::size_t s = 0; s < out.sheets.size(); ++s) {
+        const Partner_sheet& S = out.sheets[s];
+        const bool at_a = S.first <= i && i <= S.last(), at_b = S.first <= i + 1 && i + 1 <= S.last();
+        // (a sheet outside the domain wherever it is known needs no hole: the exclusion covers the domain only)
+        const bool relevant = (at_a && partner_in_domain(eq, domain, unbounded, e.polyline[i], S.partner[i - S.first], 1e-6)) ||
+                              (at_b && partner_in_domain(eq, domain, unbounded, e.polyline[i + 1], S.partner[i + 1 - S.first], 1e-6));
+        if (!relevant) continue;
+        if (at_a && at_b) active.push_back(s);
+        else broken = true;
+      }
+      if (broken) {
+        undecided += T.hi - T.lo;
+        status_open += T.hi - T.lo;
+        continue;
+      }
+      if (active.empty()) {  // no partner at either end: the strip of the cell over T holds none either
+        if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) {
+          undecided += T.hi - T.lo;
+          status_open += T.hi - T.lo;
+        }
+        continue;
+      }
+      const double oa = e.polyline[i][other], ob = e.polyline[i + 1][other];
+      const bool increasing = a.mid() <= b.mid();
+      struct Span {
+        double f0, f1;  // the span's part, as fractions from point i to point i + 1
+        int depth;
+      };
+      std::vector<Span> todo{{0, 1, 0}};
+      bool ends_done[2] = {false, false};
+      while (!todo.empty()) {
+        const Span sp = todo.back();
+        todo.pop_back();
+        auto at = [&](double f, double x0, double x1) { return x0 + f * (x1 - x0); };
+        const double t0 = at(sp.f0, a.mid(), b.mid()), t1 = at(sp.f1, a.mid(), b.mid());
+        D Ts{std::min(t0, t1), std::max(t0, t1)};
+        if (sp.f0 == 0) Ts = increasing ? D{std::min(a.lo, Ts.lo), Ts.hi} : D{Ts.lo, std::max(a.hi, Ts.hi)};
+        if (sp.f1 == 1) Ts = increasing ? D{Ts.lo, std::max(b.hi, Ts.hi)} : D{std::min(b.lo, Ts.lo), Ts.hi};
+        std::vector<std::array<std::array<double, 2>, 2>> ends;
+        for (std::size_t s : active) {
+          const Partner_sheet& S = out.sheets[s];
+          const auto& ya = S.partner[i - S.first];
+          const auto& yb = S.partner[i + 1 - S.first];
+          ends.push_back({std::array<double, 2>{at(sp.f0, ya[0], yb[0]), at(sp.f0, ya[1], yb[1])},
+                          std::array<double, 2>{at(sp.f1, ya[0], yb[0]), at(sp.f1, ya[1], yb[1])}});
+        }
+        std::vector<std::array<D, 3>> K;
+        if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget)) {
+          bool genuine = false;
+          for (const auto& k : K)
+            genuine = genuine || status_from_partner(eq, domain, false, axis, Ts, k, nullptr, true) == Partner_status::genuine;
+          if (!genuine) status_open += std::fabs(t1 - t0);
+          for (int end = 0; end < 2; ++end) {  // the enclosures at the polyline points the part reaches
+            if ((end == 0 ? sp.f0 : sp.f1) != end || ends_done[end]) continue;
+            ends_done[end] = true;
+            for (std::size_t j = 0; j < active.size(); ++j) {
+              Partner_sheet& S = out.sheets[active[j]];
+              const std::size_t k = (end == 0 ? i : i + 1) - S.first;
+              S.enclosure[k] = {K[j][1], K[j][2]};
+              S.genuine_proved[k] = status_from_partner(eq, domain, false, axis, Ts, K[j], nullptr, true) ==
+                                    Partner_status::genuine;
+            }
+          }
+          continue;
+        }
+        if (sp.depth < 3) {
+          const double m = 0.5 * (sp.f0 + sp.f1);
+          todo.push_back({m, sp.f1, sp.depth + 1});
+          todo.push_back({sp.f0, m, sp.depth + 1});
+          continue;
+        }
+        undecided += std::fabs(t1 - t0);
+        status_open += std::fabs(t1 - t0);
+      }
+    }
+  }
+  out.undecided_fraction = total > 0 ? std::min(1.0, undecided / total) : 1;
+  out.status_undecided_fraction = total > 0 ? std::min(1.0, status_open / total) : 1;
+  return out;
+}
+
+}  // namespace internal
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_LIFTING_PARTNER_SHEETS_H
