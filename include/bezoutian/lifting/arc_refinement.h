@@ -6,8 +6,8 @@
 // traced points, and a curved sheet drawn by chords strays from the true curve. A span between consecutive points
 // of one graph piece is halved when
 //  - the number of real partners differs at its ends (a sheet begins or ends inside it), down to a span of 2^-40
-//    of the piece's width, where the fibre is known on both sides of the change up to rounding; or the number of
-//    those in the domain differs (a sheet leaves the domain), down to a span of the tolerance; or
+//    of the piece's width, where the fibre is known on both sides of the change up to rounding (only where the
+//    number of partners in the domain changes too: a sheet leaving the domain is the split points' business); or
 //  - for a partner at the midpoint, the chord of the nearest partners at the ends misses its point by more than the
 //    tolerance, in 3D or in either parameter domain (the midpoint test of adaptive sampling: a floating-point
 //    estimate of the distance, not a bound).
@@ -188,9 +188,9 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
     while (i < e.pieces[p].last && inserted < max_points) {
       const std::array<double, 2> xa = e.polyline[i], xb = e.polyline[i + 1];
       const double ta = xa[std::size_t(axis)], tb = xb[std::size_t(axis)];
-      // a sheet that begins or ends (a fold: two partners meet and turn complex) is located to 2^-40 of the cell;
-      // one that leaves the domain only to the tolerance (the split-point proofs locate that crossing exactly)
-      // (a change among partners outside the domain, e.g. next to a seam, is of no interest)
+      // a sheet that begins or ends inside the domain (a fold: two partners meet and turn complex) is located to
+      // 2^-40 of the cell; a sheet that only leaves the domain is not (the split-point proofs locate that crossing
+      // exactly), nor a change among partners outside the domain (next to a seam)
       const bool fold = fibres[i].size() != fibres[i + 1].size() &&
                         inside_count(xa, fibres[i]) != inside_count(xb, fibres[i + 1]);
       const bool change = fold;
