@@ -190,6 +190,20 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                           {"second", {c.second_0.to_decimal_string(17), c.second_1.to_decimal_string(17)}},
                           {"point", {c.point[0], c.point[1], c.point[2]}}});
     j["contacts"] = contacts;
+    // common regions of the two domains (pieces of one surface), exact: {u0, u1, v0, v1} and {s0, s1, t0, t1}
+    json overlaps = json::array();
+    for (const auto& ov : L.overlaps) {
+      json first = json::array(), second = json::array();
+      for (std::size_t k = 0; k < 4; ++k) {
+        first.push_back(bezoutian::io::to_exact_string(ov.first[k]));
+        second.push_back(bezoutian::io::to_exact_string(ov.second[k]));
+      }
+      overlaps.push_back({{"first", first},
+                          {"second", second},
+                          {"u", ov.along_u.text(ov.swapped ? "t" : "s")},
+                          {"v", ov.along_v.text(ov.swapped ? "s" : "t")}});
+    }
+    j["overlaps"] = overlaps;
   }
   // where genuine parts of arcs end inside the box (the partner reaches the partner domain's boundary): a traced
   // point of its component (points[point_index]) and a box proved to hold exactly one such crossing
@@ -370,6 +384,16 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
     else
       std::cout << " at " << c.first_0.to_double() << " = side " << side_name[c.side_second] << " of the second at "
                 << c.second_0.to_double() << "\n";
+  }
+  for (const auto& ov : L.overlaps) {
+    auto box = [](const std::array<bezoutian::Rational, 4>& r) {
+      using bezoutian::io::to_exact_string;
+      return "[" + to_exact_string(r[0]) + ", " + to_exact_string(r[1]) + "] x [" + to_exact_string(r[2]) + ", " +
+             to_exact_string(r[3]) + "]";
+    };
+    std::cout << "overlap: " << box(ov.first) << " of the first patch = " << box(ov.second)
+              << " of the second, (u, v) = (" << ov.along_u.text(ov.swapped ? "t" : "s") << ", "
+              << ov.along_v.text(ov.swapped ? "s" : "t") << ")\n";
   }
   for (const auto& e : L.edge_lines) std::cout << "edge line: " << e.description << "\n";
   const auto& T = L.topology;

@@ -1487,8 +1487,15 @@ TEST_CASE("structured surfaces: height fields apart, patches apart, coincident h
   CHECK(S.topology_computed);
   CHECK(S.topology_method == "separated hulls");
   CHECK(S.topology.components.empty());
-  // one height field twice: the patches coincide, an overlap (proved), reported as such
-  CHECK_THROWS_WITH(intersection_locus(low, low), Catch::Contains("the patches coincide"));
+  // one height field twice: the patches coincide, the whole square is an overlap (proved), reported as such
+  const Surface_locus C = intersection_locus(low, low);
+  INFO(C.note);
+  CHECK(C.topology_computed);
+  CHECK(C.topology_method == "common parent");
+  REQUIRE(C.overlaps.size() == 1);
+  const std::array<Q, 4> square{Q(0), Q(1), Q(0), Q(1)};
+  CHECK(C.overlaps[0].first == square);
+  CHECK(C.overlaps[0].second == square);
 }
 
 namespace {
@@ -1629,4 +1636,141 @@ TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one l
   CHECK(gap[0] < 5e-3);
   CHECK(gap[1] < 5e-3);
   CHECK(gap[2] < 5e-3);
+}
+
+// Pieces of one parametrized surface: Psi = Phi o M with M(s, t) = (alpha(s), beta(t)) (or exchanged) for Moebius
+// maps alpha, beta. Every (u, t) then has a solution and det B vanishes identically; the intersection is decided
+// through M and a proof that the common parent is injective (intersection/Patch_common_parent.h). Expected regions
+// are derived by hand from the restrictions, rotations and splits that make the pieces.
+namespace {
+const std::array<Q, 4> unit_square{Q(0), Q(1), Q(0), Q(1)};
+
+// the one shared boundary curve of a proved common-parent locus without overlap
+void check_shared_side(const Surface_locus& L, int side_first, int side_second) {
+  INFO(L.note);
+  CHECK(L.topology_computed);
+  CHECK(L.topology_method == "common parent");
+  CHECK(L.overlaps.empty());
+  CHECK(L.arcs.empty());
+  int shared = 0;
+  for (const auto& c : L.contacts)
+    if (c.shared_curve) {
+      ++shared;
+      CHECK(c.side_first == side_first);
+      CHECK(c.side_second == side_second);
+    }
+  CHECK(shared == 1);
+}
+
+// Psi(s, t) = Phi(M(s, t)) at sample points of the overlap's second rectangle, and M maps it onto the first
+void check_overlap_map(const Locus_overlap& ov, const Patch& phi, const Patch& psi) {
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) {
+      const Q s = ov.second[0] + (ov.second[1] - ov.second[0]) * Q(i, 4);
+      const Q t = ov.second[2] + (ov.second[3] - ov.second[2]) * Q(j, 4);
+      const Q u = ov.along_u(ov.swapped ? t : s), v = ov.along_v(ov.swapped ? s : t);
+      CHECK(ov.first[0] <= u);
+      CHECK(u <= ov.first[1]);
+      CHECK(ov.first[2] <= v);
+      CHECK(v <= ov.first[3]);
+      const auto a = phi.evaluate(CGAL::to_double(u), CGAL::to_double(v));
+      const auto b = psi.evaluate(CGAL::to_double(s), CGAL::to_double(t));
+      CHECK(std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) < 1e-12);
+    }
+}
+}  // namespace
+
+TEST_CASE("pieces of one surface: split halves share one boundary curve, proved", "[surface][structured][parent]") {
+  // the paraboloid z = x^2 + y^2 over [-1, 1]^2, split at u = 1/2: the halves meet along u = 1 of the first and
+  // s = 0 of the second, nowhere else (a height field is injective)
+  const Patch paraboloid = from_power({"2*u - 1", "2*v - 1", "(2*u - 1)*(2*u - 1) + (2*v - 1)*(2*v - 1)"}, 2, 2);
+  const auto halves = paraboloid.split_u(Q(1, 2));
+  CHECK(intersection_equation(halves.first, halves.second).is_degenerate());
+  check_shared_side(intersection_locus(halves.first, halves.second), 1, 3);
+  // the second half transposed: its side s = 0 becomes t = 0
+  check_shared_side(intersection_locus(halves.first, halves.second.transposed()), 1, 0);
+  // two adjacent sphere octants, the second the first turned by 90 degrees about z: one meridian in common. The
+  // map between them, u = (s - 1)/(s + 1), is a Moebius map, and the parent on [-1, 1] x [0, 1] has a zero middle
+  // weight (the half circle) that degree elevation removes
+  const auto octant = power_patch("(1 - v^2)*(1 - u^2)", "2*u*(1 - v^2)", "2*v*(1 + u^2)", "(1 + u^2)*(1 + v^2)", 2, 2);
+  const auto turned = power_patch("-2*u*(1 - v^2)", "(1 - v^2)*(1 - u^2)", "2*v*(1 + u^2)", "(1 + u^2)*(1 + v^2)", 2, 2);
+  CHECK(intersection_equation(turned, octant).is_degenerate());
+  const Surface_locus S = intersection_locus(turned, octant);
+  check_shared_side(S, 3, 1);
+  // quarter cylinders side by side: the line x = 0, y = 1
+  const auto quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  const auto next = power_patch("-2*u", "1 - u^2", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  check_shared_side(intersection_locus(quarter, next), 1, 3);
+  // pieces of one paraboloid that do not meet, without the hull test: the common parent proves them apart
+  Surface_intersection_options no_direct;
+  no_direct.direct_proofs = false;
+  const Surface_locus A = intersection_locus(paraboloid.restriction(Q(0), Q(2, 5), Q(0), Q(1)),
+                                             paraboloid.restriction(Q(3, 5), Q(1), Q(0), Q(1)), no_direct);
+  INFO(A.note);
+  CHECK(A.topology_computed);
+  CHECK(A.topology_method == "common parent");
+  CHECK(A.overlaps.empty());
+  CHECK(A.contacts.empty());
+}
+
+TEST_CASE("pieces of one surface: overlapping, nested, identical, elevated and turned pieces, the common regions",
+          "[surface][structured][parent]") {
+  const Patch paraboloid = from_power({"2*u - 1", "2*v - 1", "(2*u - 1)*(2*u - 1) + (2*v - 1)*(2*v - 1)"}, 2, 2);
+  auto overlap_of = [](const Patch& a, const Patch& b) {
+    const Surface_locus L = intersection_locus(a, b);
+    INFO(L.note);
+    CHECK(L.topology_computed);
+    CHECK(L.topology_method == "common parent");
+    REQUIRE(L.overlaps.size() == 1);
+    check_overlap_map(L.overlaps[0], a, b);
+    return L.overlaps[0];
+  };
+  // u in [0, 3/5] and u in [2/5, 1] of the paraboloid: they share u in [2/5, 3/5], which is [2/3, 1] of the first
+  // piece (u = 3/5 x) and [0, 1/3] of the second (u = 2/5 + 3/5 x)
+  const Patch left = paraboloid.restriction(Q(0), Q(3, 5), Q(0), Q(1));
+  const Patch right = paraboloid.restriction(Q(2, 5), Q(1), Q(0), Q(1));
+  CHECK(intersection_equation(left, right).is_degenerate());
+  Locus_overlap ov = overlap_of(left, right);
+  CHECK(ov.first == std::array<Q, 4>{Q(2, 3), Q(1), Q(0), Q(1)});
+  CHECK(ov.second == std::array<Q, 4>{Q(0), Q(1, 3), Q(0), Q(1)});
+  // the middle quarter [1/4, 3/4]^2 lies inside the whole patch
+  ov = overlap_of(paraboloid, paraboloid.restriction(Q(1, 4), Q(3, 4), Q(1, 4), Q(3, 4)));
+  CHECK(ov.first == std::array<Q, 4>{Q(1, 4), Q(3, 4), Q(1, 4), Q(3, 4)});
+  CHECK(ov.second == unit_square);
+  // the same patch, and its copy elevated to bi-degree (3, 4): the whole square, by the identity
+  for (const Patch& copy : {paraboloid, paraboloid.elevated(1, 2)}) {
+    ov = overlap_of(paraboloid, copy);
+    CHECK(ov.first == unit_square);
+    CHECK(ov.second == unit_square);
+    CHECK(ov.along_u.is_affine());
+    CHECK(ov.along_u(Q(1, 3)) == Q(1, 3));
+  }
+  // a quarter cylinder x = (1 - u^2)/(1 + u^2), y = 2u/(1 + u^2) (angles 0 to 90 degrees) and the same quarter
+  // turned by the angle theta with tan(theta/2) = 1/2 (cos = 3/5, sin = 4/5): they share the angles theta to 90
+  // degrees, u = tan(phi/2) in [1/2, 1] of the first and u' = tan((phi - theta)/2) in [0, 1/3] of the second, through
+  // the Moebius map u = (u' + 1/2)/(1 - u'/2)
+  const auto quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  const auto turned = power_patch("3/5*(1 - u^2) - 8/5*u", "4/5*(1 - u^2) + 6/5*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  ov = overlap_of(quarter, turned);
+  CHECK(ov.first == std::array<Q, 4>{Q(1, 2), Q(1), Q(0), Q(1)});
+  CHECK(ov.second == std::array<Q, 4>{Q(0), Q(1, 3), Q(0), Q(1)});
+  CHECK_FALSE(ov.along_u.is_affine());
+}
+
+TEST_CASE("pieces of one surface: a self-intersecting parent is not called proved", "[surface][structured][parent]") {
+  // The folded patch ((u - 3/10)^2, v^2, (u - 3/10)(v - 1/3)) has the double points (u, 1/3) ~ (3/5 - u, 1/3). Split
+  // at u = 3/10 the halves share their boundary and also meet along v = 1/3 (u in [0, 3/10] against 3/5 - u): the
+  // common parent is not injective, so only the shared part is reported and the rest is left undecided, saying so
+  const Patch folded = from_power({"(u - 3/10)*(u - 3/10)", "v*v", "(u - 3/10)*(v - 1/3)"}, 3, 2);
+  const auto halves = folded.split_u(Q(3, 10));
+  const Surface_locus L = intersection_locus(halves.first, halves.second);
+  INFO(L.note);
+  CHECK_FALSE(L.topology_computed);
+  CHECK(L.note.find("not decided") != std::string::npos);
+  CHECK(L.overlaps.empty());
+  // the same patch twice: the whole square is an overlap, the pairs of its double curve are not decided
+  const Surface_locus T = intersection_locus(folded, folded);
+  CHECK_FALSE(T.topology_computed);
+  REQUIRE(T.overlaps.size() == 1);
+  CHECK(T.overlaps[0].first == unit_square);
 }

@@ -15,6 +15,7 @@
 #define BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
 
 #include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/intersection/Patch_common_parent.h>
 #include <bezoutian/intersection/Patch_common_projection.h>
 #include <bezoutian/intersection/Patch_injectivity.h>
 #include <bezoutian/intersection/Patch_separation.h>
@@ -828,6 +829,33 @@ inline Surface_locus separated_patches_locus(const Surface_intersection_options&
   return L;
 }
 
+// The parameter rectangles {x0, x1, y0, y1} of the two patches that the locus covers: (u, v) in box u x domain v
+// for the first, (s, t) in domain u x box t for the second.
+inline std::array<Rectangle, 2> intersection_domains(const Surface_intersection_options& o) {
+  const Parameter_box &b = o.box, &d = o.partner_domain;
+  return {Rectangle{b.u0, b.u1, d.v0, d.v1}, Rectangle{d.u0, d.u1, b.v0, b.v1}};
+}
+
+// The intersection locus of two patches that are pieces of one surface (intersection/Patch_common_parent.h), with
+// the outcome `cp` of intersect_common_parent: no curve of D = 0 (det B vanishes identically); when proved, the
+// common region as an overlap and common boundary pieces in `contacts` are the whole intersection; otherwise the
+// overlap and the reason the rest is not decided.
+inline Surface_locus common_parent_locus(const Surface_intersection_options& o, const Common_parent_intersection& cp,
+                                         std::vector<Boundary_contact> contacts) {
+  Surface_locus L;
+  L.self_intersection = false;
+  L.equation_computed = false;
+  L.topology.box = o.box;
+  L.contacts = std::move(contacts);
+  L.topology_computed = cp.proved;
+  if (cp.proved) L.topology_method = "common parent";
+  L.note = cp.reason;
+  if (cp.related && cp.kind == Common_parent_intersection::region)
+    L.overlaps.push_back(Locus_overlap{cp.first, cp.second, cp.relation.swapped, cp.relation.along_u,
+                                       cp.relation.along_v});
+  return L;
+}
+
 // The box, seen through the exact partner (v, s) = (t, u) of two patches over one projection, lies in the partner
 // domain: u in [d.u0, d.u1] (s = u) and t in [d.v0, d.v1] (v = t).
 inline bool box_within_transposed_domain(const Surface_intersection_options& o) {
@@ -1048,10 +1076,13 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (o.direct_proofs && internal::within_unit_square(o)) {
     if (internal::box_within_transposed_domain(o)) {
       const Common_projection cp = common_projection(phi, psi);
-      if (cp.found && CGAL::is_zero(cp.height_difference))
-        throw Invalid_input("intersection: the patches coincide: Phi(u, v) = Psi(u, v) on the whole square (proved: " +
-                            cp.reason + ", and the remaining coordinates agree)");
-      if (cp.found) return internal::common_projection_locus(phi, psi, o, cp, std::move(L.contacts));
+      if (cp.found && !CGAL::is_zero(cp.height_difference))
+        return internal::common_projection_locus(phi, psi, o, cp, std::move(L.contacts));
+      if (cp.found) {  // Psi = Phi: the identity is a common parent, which decides the overlap
+        const auto D = internal::intersection_domains(o);
+        const Common_parent_intersection parent = intersect_common_parent(phi, psi, D[0], D[1]);
+        if (parent.related) return internal::common_parent_locus(o, parent, std::move(L.contacts));
+      }
     }
     // patches with a boundary contact meet: only the others can be apart (a budget of 2000 pairs of pieces)
     if (L.contacts.empty()) {
@@ -1060,9 +1091,18 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     }
   }
   L.equation = intersection_equation(phi, psi, o.formula);
-  if (L.equation.is_degenerate())
-    throw Invalid_input("intersection: det B vanishes identically: the patches overlap (share a surface piece) or "
-                        "are not generic in the sense of Theorems 2-3");
+  if (L.equation.is_degenerate()) {
+    // every (u, t) has a solution: typically Psi = Phi o M, two pieces of one parametrized surface
+    std::string why = "no common parent was searched: the partner domain is unbounded";
+    if (!o.partner_domain_unbounded) {
+      const auto D = internal::intersection_domains(o);
+      const Common_parent_intersection cp = intersect_common_parent(phi, psi, D[0], D[1]);
+      if (cp.related) return internal::common_parent_locus(o, cp, std::move(L.contacts));
+      why = cp.reason;
+    }
+    throw Invalid_input("intersection: det B vanishes identically and " + why +
+                        " (the patches are not generic in the sense of Theorems 2-3)");
+  }
   const bool traced =
       internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)));
   const Bezoutian_matrix& B = L.equation.matrix;

@@ -7,6 +7,7 @@
 #include <bezoutian/algebraic/Algebraic_real.h>
 #include <bezoutian/arithmetic/number_types.h>
 #include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/geometry/Moebius_map.h>
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/topology/Curve_topology.h>
 
@@ -119,6 +120,15 @@ struct Locus_edge_line {
   std::vector<Locus_point> points;
 };
 
+/// Two patches that share a surface piece (intersection/Patch_common_parent.h): the rectangle `first` of the first
+/// patch's domain and the rectangle `second` of the second's have one image, point by point through
+/// Psi(s, t) = Phi(u, v), (u, v) = swapped ? (along_u(t), along_v(s)) : (along_u(s), along_v(t)). Exact.
+struct Locus_overlap {
+  std::array<Rational, 4> first{}, second{};  ///< {u0, u1, v0, v1} and {s0, s1, t0, t1}
+  bool swapped = false;
+  Moebius_map along_u, along_v;
+};
+
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
@@ -135,6 +145,9 @@ struct Surface_locus {
   std::string note;  ///< why the topology was not computed, if it was not
   /// Intersection of two patches: their boundary contacts (shared edges, touching corners), exact.
   std::vector<Boundary_contact> contacts;
+  /// Intersection of two patches that are pieces of one surface: the common regions of their domains (exact). The
+  /// rest of the intersection is then in `contacts` (`topology_method` "common parent"); see `note`.
+  std::vector<Locus_overlap> overlaps;
   /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
   std::vector<Locus_edge_line> edge_lines;
   /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
