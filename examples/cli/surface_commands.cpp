@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -27,6 +28,32 @@
 
 namespace bezoutian_cli {
 namespace {
+
+std::string exact_or_decimal(const bezoutian::Algebraic_real& x) {
+  return x.is_rational() ? bezoutian::io::to_exact_string(x.rational_value()) : x.to_decimal_string(17);
+}
+
+// "tangent", "singular" (a patch's normal vanishes), "transversal" or "undecided" (an irrational partner)
+std::string contact_kind(const bezoutian::Isolated_point_partners::Partner& p) {
+  if (!p.tangency_decided) return "undecided";
+  return p.singular ? "singular" : p.tangent ? "tangent" : "transversal";
+}
+
+std::string isolated_point_text(const bezoutian::Locus_isolated_point& ip) {
+  const auto& x = ip.lift;
+  std::ostringstream s;
+  if (x.exact)
+    s << "(u, t) = (" << bezoutian::io::to_exact_string(x.projection[0]) << ", "
+      << bezoutian::io::to_exact_string(x.projection[1]) << "): ";
+  if (!x.proved) return s.str() + "not decided (" + x.reason + ")";
+  if (x.partners.empty()) return s.str() + "phantom, proved (" + x.reason + ")";
+  s << "the patches touch (proved)";
+  for (const auto& p : x.partners)
+    s << "; partner (v, s) = (" << exact_or_decimal(p.v) << ", " << exact_or_decimal(p.s) << "), " << contact_kind(p)
+      << ", at (" << p.point[0] << ", " << p.point[1] << ", " << p.point[2] << ")";
+  return s.str();
+}
+
 
 using bezoutian::Rational;
 using Patch = bezoutian::Rational_bezier_patch<Rational>;
@@ -204,6 +231,24 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                           {"v", ov.along_v.text(ov.swapped ? "s" : "t")}});
     }
     j["overlaps"] = overlaps;
+    // isolated real points of D = 0: contacts of the patches (every real partner, exact) or phantoms
+    json isolated = json::array();
+    for (const auto& ip : L.isolated_points) {
+      const auto& x = ip.lift;
+      json partners = json::array();
+      for (const auto& p : x.partners)
+        partners.push_back({{"v", exact_or_decimal(p.v)},
+                            {"s", exact_or_decimal(p.s)},
+                            {"kind", contact_kind(p)},
+                            {"point", {p.point[0], p.point[1], p.point[2]}}});
+      json e = {{"vertex", ip.vertex}, {"proved", x.proved}, {"genuine", ip.genuine()}, {"partners", partners},
+                {"reason", x.reason}};
+      if (x.exact)
+        e["projection"] = {bezoutian::io::to_exact_string(x.projection[0]),
+                           bezoutian::io::to_exact_string(x.projection[1])};
+      isolated.push_back(e);
+    }
+    j["isolated_points"] = isolated;
   }
   // where genuine parts of arcs end inside the box (the partner reaches the partner domain's boundary): a traced
   // point of its component (points[point_index]) and a box proved to hold exactly one such crossing
@@ -407,6 +452,14 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
             << " singular point(s), " << T.number_of_boundary_points() << " boundary point(s)\n";
   for (std::size_t i = 0; i < T.components.size(); ++i) {
     const auto& c = T.components[i];
+    if (c.isolated_point) {
+      std::cout << "  component " << i << ": isolated point";
+      for (const auto& ip : L.isolated_points)
+        if (std::find(c.vertices.begin(), c.vertices.end(), ip.vertex) != c.vertices.end())
+          std::cout << " " << isolated_point_text(ip);
+      std::cout << "\n";
+      continue;
+    }
     std::size_t genuine = 0, total = 0, proved = 0, sheets = 0;
     double worst = 0, fibre_open = 0;
     for (auto ei : c.edges) {

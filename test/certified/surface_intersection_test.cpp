@@ -1774,3 +1774,103 @@ TEST_CASE("pieces of one surface: a self-intersecting parent is not called prove
   REQUIRE(T.overlaps.size() == 1);
   CHECK(T.overlaps[0].first == unit_square);
 }
+
+// Tangential contacts of a sphere: the octant ((1 - v^2)(1 - u^2), 2u(1 - v^2), 2v(1 + u^2)) / ((1 + u^2)(1 + v^2))
+// of the unit sphere has at (u, v) = (1/2, 1/2) the point n = (9/25, 12/25, 4/5), with normal n. The plane
+// 9x + 12y + 20z = 25 k, as the height field (s, t, (25 k - 9s - 12t)/20), touches it at n for k = 1, misses it for
+// k > 1 and cuts it along a circle of radius sqrt(1 - k^2) about k n for k < 1.
+namespace {
+Patch unit_octant() {
+  return power_patch("(1 - v^2)*(1 - u^2)", "2*u*(1 - v^2)", "2*v*(1 + u^2)", "(1 + u^2)*(1 + v^2)", 2, 2);
+}
+Patch tangent_plane(const std::string& k) {
+  return from_power({"u", "v", "(25*" + k + " - 9*u - 12*v)/20"}, 1, 1);
+}
+std::size_t genuine_traced_points(const Surface_locus& L) {
+  std::size_t n = 0;
+  for (const auto& a : L.arcs)
+    for (const auto& q : a.points) n += q.genuine;
+  return n;
+}
+// the one genuine isolated point of L: its exact projection, partner and kind
+void check_one_contact(const Surface_locus& L, const std::array<Q, 2>& projection, const Q& v, const Q& s) {
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(genuine_traced_points(L) == 0);
+  int contacts = 0;
+  for (const auto& ip : L.isolated_points) {
+    INFO(ip.lift.reason);
+    CHECK(ip.lift.proved);
+    if (!ip.genuine()) continue;
+    ++contacts;
+    CHECK(ip.lift.projection == projection);
+    REQUIRE(ip.lift.partners.size() == 1);
+    const auto& p = ip.lift.partners[0];
+    CHECK(p.v == Algebraic_real(v));
+    CHECK(p.s == Algebraic_real(s));
+    CHECK(p.tangency_decided);
+    CHECK(p.tangent);
+    CHECK_FALSE(p.singular);
+  }
+  CHECK(contacts == 1);
+}
+}  // namespace
+
+TEST_CASE("tangential contacts: a plane touching a sphere, one 1e-6 above it, one 1e-6 below it",
+          "[surface][structured][tangent]") {
+  const Patch octant = unit_octant();
+  // touching: the isolated point (u, t) = (1/2, 12/25) with partner (v, s) = (1/2, 9/25), a tangent contact, and
+  // every other point of D = 0 in the box a phantom
+  check_one_contact(intersection_locus(octant, tangent_plane("1")), {Q(1, 2), Q(12, 25)}, Q(1, 2), Q(9, 25));
+  // 1e-6 above: no intersection, proved (no genuine point, every isolated point a proved phantom)
+  const Surface_locus A = intersection_locus(octant, tangent_plane("1000001/1000000"));
+  INFO(A.note);
+  REQUIRE(A.topology_computed);
+  CHECK(genuine_traced_points(A) == 0);
+  for (const auto& arc : A.arcs) CHECK(arc.undecided_fraction == 0);
+  for (const auto& ip : A.isolated_points) CHECK((ip.lift.proved && !ip.genuine()));
+  // 1e-6 below: the circle of radius sqrt(1 - k^2) = 1.414e-3, one closed component, found and complete
+  const double k = 1 - 1e-6, r = std::sqrt(1 - k * k);
+  Surface_intersection_options fine;
+  fine.polyline_tolerance = 1e-5;
+  const Surface_locus B = intersection_locus(octant, tangent_plane("999999/1000000"), fine);
+  INFO(B.note);
+  REQUIRE(B.topology_computed);
+  std::size_t closed = 0;
+  for (const auto& c : B.topology.components) closed += c.closed && !c.isolated_point;
+  CHECK(closed == 1);
+  for (const auto& arc : B.arcs)
+    for (const auto& q : arc.points)
+      if (q.genuine) {
+        const auto& p = q.point_3d;
+        CHECK(std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1) < 1e-9);
+        CHECK(std::fabs(9 * p[0] + 12 * p[1] + 20 * p[2] - 25 * k) < 1e-9);
+      }
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  const std::array<double, 3> n{9.0 / 25, 12.0 / 25, 0.8}, e1{0.8, -0.6, 0}, e2{12.0 / 25, 16.0 / 25, -0.6};
+  for (int i = 0; i < 2000; ++i) {
+    const double a = 2 * M_PI * i / 2000;
+    std::array<double, 3> x;
+    for (std::size_t c = 0; c < 3; ++c) x[c] = k * n[c] + r * (std::cos(a) * e1[c] + std::sin(a) * e2[c]);
+    const double rho = std::hypot(x[0], x[1]);
+    samples.push_back({std::array<double, 3>{x[1] / (x[0] + rho), x[2] / (1 + rho), 0}, x,
+                       std::array<double, 3>{x[0], x[1], 0}});
+  }
+  const auto gap = worst_sheet_gap(B, samples);
+  CHECK(gap[0] < 1e-4);
+  CHECK(gap[1] < 1e-4);
+  CHECK(gap[2] < 1e-4);
+}
+
+TEST_CASE("tangential contacts: spheres touching from outside and from inside", "[surface][structured][tangent]") {
+  // the octant mirrored through n (2n - Phi: the unit sphere about 2n) touches it from outside at n, and the sphere
+  // of radius 2 about -n (2 Phi - n) holds it and touches it at n; both at (s, t) = (1/2, 1/2)
+  const Patch octant = unit_octant();
+  const std::string w = "(1 + u^2)*(1 + v^2)";
+  const Patch outside = power_patch("18/25*" + w + " - (1 - v^2)*(1 - u^2)", "24/25*" + w + " - 2*u*(1 - v^2)",
+                                    "8/5*" + w + " - 2*v*(1 + u^2)", w, 2, 2);
+  check_one_contact(intersection_locus(octant, outside), {Q(1, 2), Q(1, 2)}, Q(1, 2), Q(1, 2));
+  const Patch around = power_patch("2*(1 - v^2)*(1 - u^2) - 9/25*" + w, "4*u*(1 - v^2) - 12/25*" + w,
+                                   "4*v*(1 + u^2) - 4/5*" + w, w, 2, 2);
+  check_one_contact(intersection_locus(octant, around), {Q(1, 2), Q(1, 2)}, Q(1, 2), Q(1, 2));
+}

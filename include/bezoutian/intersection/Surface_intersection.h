@@ -1160,6 +1160,11 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point);
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
+  if (!o.partner_domain_unbounded)
+    for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)
+      if (L.topology.vertices[i].kind == Curve_topology_vertex::isolated)
+        L.isolated_points.push_back(Locus_isolated_point{
+            i, isolated_point_partners(phi, psi, L.equation.square_free, L.topology.vertices[i], o.partner_domain)});
   return L;
 }
 

@@ -8,6 +8,7 @@
 #include <bezoutian/arithmetic/number_types.h>
 #include <bezoutian/elimination/Implicit_equation.h>
 #include <bezoutian/geometry/Moebius_map.h>
+#include <bezoutian/lifting/isolated_point_partners.h>
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/topology/Curve_topology.h>
 
@@ -129,6 +130,15 @@ struct Locus_overlap {
   Moebius_map along_u, along_v;
 };
 
+/// An isolated real point of D = 0 in the box (a vertex of kind isolated) with its real partners: a point where
+/// the two patches touch (a tangential contact, or a singular point of a patch) or a phantom
+/// (lifting/isolated_point_partners.h).
+struct Locus_isolated_point {
+  std::size_t vertex = 0;  ///< index into topology.vertices
+  Isolated_point_partners lift;
+  bool genuine() const { return lift.proved && !lift.partners.empty(); }
+};
+
 /// The result: the implicit equation, the certified topology of D = 0 in the box, and the traced arcs.
 struct Surface_locus {
   bool self_intersection = true;
@@ -148,6 +158,9 @@ struct Surface_locus {
   /// Intersection of two patches that are pieces of one surface: the common regions of their domains (exact). The
   /// rest of the intersection is then in `contacts` (`topology_method` "common parent"); see `note`.
   std::vector<Locus_overlap> overlaps;
+  /// Intersection of two patches: the isolated real points of D = 0 in the box, each decided as a contact of the
+  /// patches (with every partner) or a phantom, or left undecided with the reason.
+  std::vector<Locus_isolated_point> isolated_points;
   /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
   std::vector<Locus_edge_line> edge_lines;
   /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
