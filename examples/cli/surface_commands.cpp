@@ -164,7 +164,8 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   j["components"] = comps;
   // sides of the box on D = 0 (collapsed edges, shared boundary curves): not part of the components above
   json edges = json::array();
-  static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain"};
+  static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain",
+                                 "partner_iso_curve"};
   for (const auto& e : L.edge_lines) {
     json pts = json::array(), partner = json::array(), p3 = json::array();
     for (const auto& q : e.points) {
@@ -173,6 +174,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
       p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
     }
     edges.push_back({{"side", e.side},
+                     {"interior", e.interior},
                      {"line", std::string(e.side % 2 == 1 ? "u" : (L.self_intersection ? "v" : "t")) + " = " + text(e.value)},
                      {"cause", causes[int(e.cause)]},
                      {"partner_side", e.partner_side},

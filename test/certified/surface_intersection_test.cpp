@@ -1874,3 +1874,54 @@ TEST_CASE("tangential contacts: spheres touching from outside and from inside", 
                                    "4*v*(1 + u^2) - 4/5*" + w, w, 2, 2);
   check_one_contact(intersection_locus(octant, around), {Q(1, 2), Q(1, 2)}, Q(1, 2), Q(1, 2));
 }
+
+TEST_CASE("tangential contacts along a curve: a plane along a cylinder's boundary line, a cone along a sphere's circle",
+          "[surface][structured][tangent]") {
+  // the quarter cylinder ((1 - u^2), 2u, v (1 + u^2)) / (1 + u^2) and the plane (1, 2s - 1, t) touch along the line
+  // x = 1, y = 0: the cylinder's side u = 0 and the plane's iso-curve s = 1/2 (proved: the iso-curve lies on the side)
+  const auto quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  const Patch wall = from_power({"1", "2*u - 1", "v"}, 1, 1);
+  const Surface_locus L = intersection_locus(quarter, wall);
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(genuine_traced_points(L) == 0);
+  REQUIRE(L.edge_lines.size() == 1);
+  const Locus_edge_line& e = L.edge_lines[0];
+  CHECK(e.side == 3);
+  CHECK_FALSE(e.interior);
+  CHECK(e.cause == Locus_edge_line::partner_iso_curve);
+  CHECK(e.partner_value == Q(1, 2));
+  CHECK(e.genuine);
+  CHECK(e.status_proved);
+  REQUIRE(e.points.size() > 2);
+  for (const auto& q : e.points) {
+    CHECK(std::fabs(q.point_3d[0] - 1) < 1e-12);
+    CHECK(std::fabs(q.point_3d[1]) < 1e-12);
+    CHECK(std::fabs(q.point_3d[2] - q.projection[1]) < 1e-12);  // z = t
+    CHECK(std::fabs(q.second[0] - 0.5) < 1e-12);
+  }
+  // the sphere octant and the cone with apex (0, 0, 5/4) tangent to it along the latitude z = 4/5 (radius 3/5, the
+  // octant's iso-curve v = 1/2): (w (3/5) cos, w (3/5) sin, 5/4 - (9/20) w), w = 1/2 + t, touches it along t = 1/2,
+  // a line inside the box, proved genuine at every point and removed from D; nothing else meets
+  const Patch octant = unit_octant();
+  const auto cone = power_patch("(1/2 + v)*3/5*(1 - u^2)", "(1/2 + v)*6/5*u", "(1 + u^2)*(5/4 - 9/20*(1/2 + v))",
+                                "1 + u^2", 2, 1);
+  const Surface_locus C = intersection_locus(octant, cone);
+  INFO(C.note);
+  REQUIRE(C.topology_computed);
+  CHECK(genuine_traced_points(C) == 0);
+  REQUIRE(C.edge_lines.size() == 1);
+  const Locus_edge_line& c = C.edge_lines[0];
+  CHECK(c.interior);
+  CHECK(c.side == 0);
+  CHECK(c.value == Q(1, 2));
+  CHECK(c.cause == Locus_edge_line::partner_iso_curve);
+  CHECK(c.partner_value == Q(1, 2));
+  CHECK(c.genuine);
+  REQUIRE(c.points.size() > 2);
+  for (const auto& q : c.points) {
+    CHECK(std::fabs(std::hypot(q.point_3d[0], q.point_3d[1]) - 0.6) < 1e-12);
+    CHECK(std::fabs(q.point_3d[2] - 0.8) < 1e-12);
+    CHECK(std::fabs(q.first[1] - 0.5) < 1e-12);
+  }
+}

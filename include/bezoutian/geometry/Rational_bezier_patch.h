@@ -134,6 +134,15 @@ class Rational_bezier_patch {
   }
 
   /// True if the weights are not all equal.
+  /// Every weight is positive: the weight function is then positive on [0,1]^2 and the patch lies in the convex
+  /// hull of its control points.
+  bool has_positive_weights() const {
+    for (const auto& row : net_)
+      for (const Homogeneous_point& h : row)
+        if (!CGAL::is_positive(h[0])) return false;
+    return true;
+  }
+
   bool is_rational() const {
     for (const auto& row : net_)
       for (const Homogeneous_point& h : row)

@@ -308,10 +308,7 @@ inline Common_parent_intersection intersect_common_parent(const Rational_bezier_
       } catch (const Invalid_input&) {
         continue;  // a zero control vector: elevate further
       }
-      positive = true;
-      for (std::size_t i = 0; i <= std::size_t(Q.degree_u()); ++i)
-        for (std::size_t j = 0; j <= std::size_t(Q.degree_v()); ++j)
-          positive = positive && CGAL::is_positive(Q.weight(i, j));
+      positive = Q.has_positive_weights();
     }
     Injectivity_proof proof;
     if (positive)

@@ -38,13 +38,10 @@ struct Common_projection {
 inline Common_projection common_projection(const Rational_bezier_patch<Rational>& phi,
                                            const Rational_bezier_patch<Rational>& psi) {
   Common_projection out;
-  for (const auto* P : {&phi, &psi})
-    for (std::size_t i = 0; i <= std::size_t(P->degree_u()); ++i)
-      for (std::size_t j = 0; j <= std::size_t(P->degree_v()); ++j)
-        if (!CGAL::is_positive(P->weight(i, j))) {
-          out.reason = "not all weights are positive";
-          return out;
-        }
+  if (!phi.has_positive_weights() || !psi.has_positive_weights()) {
+    out.reason = "not all weights are positive";
+    return out;
+  }
   for (int k = 0; k < 4; ++k)
     if (internal::side_collapsed(psi, k)) {
       out.reason = "a side of the second patch is collapsed to a point";

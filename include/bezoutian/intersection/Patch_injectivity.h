@@ -374,12 +374,10 @@ inline bool injective_along(const Rational_bezier_patch<Rational>& P, const std:
 /// means "not proved".
 inline Injectivity_proof prove_injective(const Rational_bezier_patch<Rational>& P) {
   Injectivity_proof out;
-  for (std::size_t i = 0; i <= std::size_t(P.degree_u()); ++i)
-    for (std::size_t j = 0; j <= std::size_t(P.degree_v()); ++j)
-      if (!CGAL::is_positive(P.weight(i, j))) {
-        out.reason = "not all weights are positive";
-        return out;
-      }
+  if (!P.has_positive_weights()) {
+    out.reason = "not all weights are positive";
+    return out;
+  }
   if (P.degree_u() < 1 || P.degree_v() < 1) {
     out.reason = "the patch has degree 0 in u or v";
     return out;

@@ -31,12 +31,6 @@ struct Separation_proof {
 
 namespace internal {
 
-inline bool positive_weights(const Rational_bezier_patch<Rational>& P) {
-  for (std::size_t i = 0; i <= std::size_t(P.degree_u()); ++i)
-    for (std::size_t j = 0; j <= std::size_t(P.degree_v()); ++j)
-      if (!CGAL::is_positive(P.weight(i, j))) return false;
-  return true;
-}
 
 using Point_3 = std::array<Rational, 3>;
 
@@ -104,7 +98,7 @@ inline std::vector<Rational_bezier_patch<Rational>> quarters(const Rational_bezi
 inline Separation_proof prove_disjoint(const Rational_bezier_patch<Rational>& P, const Rational_bezier_patch<Rational>& Q,
                                        int max_depth = 3, std::size_t max_pairs = 20000) {
   Separation_proof out;
-  if (!internal::positive_weights(P) || !internal::positive_weights(Q)) {
+  if (!P.has_positive_weights() || !Q.has_positive_weights()) {
     out.reason = "not all weights are positive (the convex hull property does not hold)";
     return out;
   }

@@ -15,6 +15,7 @@
 #define BEZOUTIAN_INTERSECTION_SURFACE_INTERSECTION_H
 
 #include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/arithmetic/simplest_rational.h>
 #include <bezoutian/intersection/Patch_common_parent.h>
 #include <bezoutian/intersection/Patch_common_projection.h>
 #include <bezoutian/intersection/Patch_injectivity.h>
@@ -306,7 +307,10 @@ inline double distance3(const std::array<double, 3>& a, const std::array<double,
 
 // Computes the topology of the square-free D in the box unless D is constant (no locus: proved empty) or its
 // degree is above the limit; returns whether lifting should follow.
-inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_options& o) {
+// `proved_line(vertical, c)`: whether a rational line inside the box on D = 0 is proved genuine at every point;
+// such lines are reported with the sides (interior edge lines) and removed from D as they are.
+inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_options& o,
+                                   const std::function<bool(bool, const Rational&)>& proved_line = {}) {
   // the box's sides on D = 0 are reported apart (edge_lines); the subdivision cannot follow a curve along its edge
   const Box_edge_lines lines = box_edge_lines(L.equation.square_free, o.box);
   for (int side : lines.sides) {
@@ -315,7 +319,17 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
     e.value = side_value(o.box, side);
     L.edge_lines.push_back(e);
   }
-  const Polynomial_2<Integer>& D = lines.rest;
+  Polynomial_2<Integer> D = lines.rest;
+  if (proved_line)
+    for (const Interior_line& line : interior_lines(D, o.box)) {
+      if (!proved_line(line.vertical, line.value)) continue;
+      Locus_edge_line e;
+      e.side = line.vertical ? 3 : 0;
+      e.value = line.value;
+      e.interior = true;
+      L.edge_lines.push_back(e);
+      D = without_line(D, line.vertical, line.value);
+    }
   L.topology.box = o.box;
   if (D.degree() <= 0 && D[0].degree() <= 0) {
     L.topology_computed = true;  // D is a nonzero constant: the locus is empty, proved
@@ -413,7 +427,7 @@ inline Locus_point edge_line_point(const Edge_line_explanation& x, int side, con
   // the pair (P on C, Q on M): C is the side's own iso-curve over the partner domain, M the partner's at the
   // fixed coordinate cp; for a collapsed C paired with itself (partner_side -1) Q is the sample's own point
   const double o0 = CGAL::to_double(vertical ? d.v0 : d.u0), o1 = CGAL::to_double(vertical ? d.v1 : d.u1);
-  const double cp = x.partner_side < 0 ? c : CGAL::to_double(side_value(d, x.partner_side));
+  const double cp = CGAL::to_double(x.partner_value);
   const double sigma = own_point ? (std::fabs(f - o0) > std::fabs(f - o1) ? 0.0 : 1.0)
                                  : nearest_parameter(x.own, x.other.evaluate(tau));
   const double g = o0 + sigma * (o1 - o0);  // the free coordinate of P on C
@@ -437,6 +451,54 @@ inline Locus_point edge_line_point(const Edge_line_explanation& x, int side, con
   return q;
 }
 
+// Candidates c' for the fixed coordinate of a partner iso-curve on the box side (explain_edge_line): the partner
+// coordinate (s for a side u = c, v for t = c) of a floating-point partner at the side's midpoint, rounded to the
+// simplest rational within 1e-9. Intersections only (the exact test decides).
+inline std::vector<Rational> edge_line_partner_candidates(int side, const Parameter_box& box,
+                                                         const Surface_intersection_options& o,
+                                                         const Rational_bezier_patch<Rational>& phi,
+                                                         const Rational_bezier_patch<Rational>* psi) {
+  if (!psi || o.partner_domain_unbounded) return {};
+  const bool vertical = side_is_vertical(side);
+  const double c = CGAL::to_double(side_value(box, side));
+  const double f = CGAL::to_double(vertical ? (box.v0 + box.v1) / 2 : (box.u0 + box.u1) / 2);
+  const double u = vertical ? c : f, t = vertical ? f : c;
+  auto residual = [&](double v, double s) {
+    const auto a = phi.evaluate(u, v), b = psi->evaluate(s, t);
+    return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  const Parameter_box& d = o.partner_domain;
+  const auto seed = grid_seed(residual, {CGAL::to_double(d.v0), CGAL::to_double(d.v1), CGAL::to_double(d.u0),
+                                         CGAL::to_double(d.u1)});
+  if (!std::isfinite(seed[0])) return {};
+  const auto vs = polish_partner(residual, seed);
+  const double x = vertical ? vs[1] : vs[0], w = 1e-9 * (1 + std::fabs(x));
+  Rational r;
+  if (!simplest_rational_in(Rational(x - w), Rational(x + w), r)) return {};
+  return {r};
+}
+
+// The explanation of an edge line (a side of the box, or an interior line as a side of box_from_line).
+inline Edge_line_explanation explain(const Locus_edge_line& e, const Surface_intersection_options& o,
+                                     const Rational_bezier_patch<Rational>& phi,
+                                     const Rational_bezier_patch<Rational>* psi) {
+  const Parameter_box b = e.interior ? box_from_line(o.box, side_is_vertical(e.side), e.value) : o.box;
+  return explain_edge_line(e.side, b, o.partner_domain, o.partner_domain_unbounded, phi, psi,
+                           edge_line_partner_candidates(e.side, b, o, phi, psi));
+}
+
+// Whether the interior line x = c or y = c is proved genuine at every point (topology_is_affordable)
+inline bool interior_line_is_genuine(bool vertical, const Rational& c, const Surface_intersection_options& o,
+                                     const Rational_bezier_patch<Rational>& phi,
+                                     const Rational_bezier_patch<Rational>* psi) {
+  Locus_edge_line e;
+  e.side = vertical ? 3 : 0;
+  e.value = c;
+  e.interior = true;
+  const auto cause = explain(e, o, phi, psi).cause;
+  return cause != Edge_line_explanation::unexplained && cause != Edge_line_explanation::outside_domain;
+}
+
 // The box's sides on D = 0 (found by topology_is_affordable): their cause (intersection/internal/box_edge_lines.h) and sample
 // points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
 // exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
@@ -448,29 +510,36 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
   const Parameter_box& d = o.partner_domain;
   const char* names[2][4] = {{"v", "u", "v", "u"}, {"t", "u", "t", "u"}};
   for (Locus_edge_line& e : L.edge_lines) {
-    const Edge_line_explanation x = explain_edge_line(e.side, b, d, o.partner_domain_unbounded, phi, psi);
+    const Edge_line_explanation x = explain(e, o, phi, psi);
     const bool vertical = side_is_vertical(e.side);
     e.cause = Locus_edge_line::Cause(int(x.cause));
     e.partner_side = x.partner_side;
-    e.genuine = x.cause == Edge_line_explanation::collapsed || x.cause == Edge_line_explanation::shared_curve;
+    e.partner_value = x.partner_value;
+    e.genuine = x.cause != Edge_line_explanation::unexplained && x.cause != Edge_line_explanation::outside_domain;
     e.status_proved = x.cause != Edge_line_explanation::unexplained;
-    const std::string line = std::string(names[psi ? 1 : 0][e.side]) + " = " + std::to_string(CGAL::to_double(e.value));
+    const std::string line = std::string(e.interior ? "line " : "side ") + names[psi ? 1 : 0][e.side] + " = " +
+                             std::to_string(CGAL::to_double(e.value));
     switch (x.cause) {
       case Edge_line_explanation::collapsed:
-        e.description = "the side " + line + " lies on D = 0: a collapsed edge (one 3D point), genuine";
+        e.description = "the " + line + " lies on D = 0: a collapsed edge (one 3D point), genuine";
         break;
       case Edge_line_explanation::shared_curve:
         // the partner's side: of the second patch (s = c') for a side u = c, of the first (v = c') for t = c
-        e.description = "the side " + line + " lies on D = 0: a boundary curve shared with the side " +
+        e.description = "the " + line + " lies on D = 0: a boundary curve shared with the side " +
                         (psi ? (vertical ? "s" : "v") : (vertical ? "u" : "v")) + " = " +
                         std::to_string(CGAL::to_double(side_value(d, x.partner_side))) +
                         (psi ? (vertical ? " of the second patch" : " of the first patch") : "") + ", genuine";
         break;
+      case Edge_line_explanation::partner_iso_curve:
+        e.description = "the " + line + " lies on D = 0: the iso-curve " + (vertical ? "s" : "v") + " = " +
+                        io::to_exact_string(x.partner_value) + " of the " + (vertical ? "second" : "first") +
+                        " patch lies on it (a common curve), genuine";
+        break;
       case Edge_line_explanation::outside_domain:
-        e.description = "the side " + line + " lies on D = 0, outside the partner domain: phantom";
+        e.description = "the " + line + " lies on D = 0, outside the partner domain: phantom";
         break;
       default:
-        e.description = "the side " + line + " lies on D = 0; its status is not proved";
+        e.description = "the " + line + " lies on D = 0; its status is not proved";
     }
     const int n = std::max(1, o.samples_per_arc);
     const double c = CGAL::to_double(e.value);
@@ -518,7 +587,7 @@ inline void mark_ends_on_edge_lines(Surface_locus& L, const Surface_intersection
           q.status_proved = true;
           continue;
         }
-        if (!x) x = explain_edge_line(e.side, o.box, o.partner_domain, o.partner_domain_unbounded, phi, psi);
+        if (!x) x = explain(e, o, phi, psi);
         const double nan = std::numeric_limits<double>::quiet_NaN();
         q = edge_line_point(*x, e.side, o, phi, psi, vertical ? CGAL::to_double(e.value) : q.projection[0],
                             vertical ? q.projection[1] : CGAL::to_double(e.value));
@@ -1103,8 +1172,9 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     throw Invalid_input("intersection: det B vanishes identically and " + why +
                         " (the patches are not generic in the sense of Theorems 2-3)");
   }
-  const bool traced =
-      internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)));
+  const bool traced = internal::topology_is_affordable(
+      L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)),
+      [&](bool vertical, const Rational& c) { return internal::interior_line_is_genuine(vertical, c, o, phi, &psi); });
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
   auto lift_point = [&](double u, double t, const std::array<double, 2>* guess) {

@@ -102,17 +102,25 @@ struct Locus_split_point {
 /// on this side are where the rest meets it). The cause is decided exactly (intersection/internal/box_edge_lines.h): a collapsed
 /// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
 /// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
-/// the seam of a closed patch), both genuine at every point; or the side's fixed coordinate lies outside the
-/// partner domain (phantom at every point).
+/// the seam of a closed patch), or an iso-curve of the partner inside its domain (a patch tangent to the other
+/// along its boundary), all genuine at every point; or the side's fixed coordinate lies outside the partner domain
+/// (phantom at every point).
 struct Locus_edge_line {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve };
   int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
   Rational value;  ///< the fixed coordinate of the side
+  /// A line u = value (side 3) or v / t = value (side 0) inside the box rather than a side: removed from D only when
+  /// its cause is proved genuine (an iso-curve of one patch lying on the other, as where two surfaces are tangent
+  /// along an iso-curve), otherwise left to the topology
+  bool interior = false;
   Cause cause = unexplained;
   /// collapsed / shared_curve: the side of the partner domain (boundary_curve order) whose iso-curve holds the
-  /// partner points; -1 for a self-intersection's collapsed side paired with itself
+  /// partner points; -1 for a self-intersection's collapsed side paired with itself and for partner_iso_curve
   int partner_side = -1;
-  bool genuine = false;        ///< every point of the side has a partner in the partner domain (collapsed, shared_curve)
+  /// collapsed / shared_curve / partner_iso_curve: the fixed coordinate of that iso-curve (s for a side u = c, v
+  /// for a side t = c)
+  Rational partner_value;
+  bool genuine = false;  ///< every point of the side has a partner in the partner domain (all causes but two)
   bool status_proved = false;  ///< `genuine` is proved for the whole side (every cause but unexplained)
   std::string description;     ///< one line for people
   /// samples along the side (samples_per_arc + 1, ends included): for a proved cause the partner comes from it (a

@@ -132,13 +132,10 @@ inline Isolated_point_partners isolated_point_partners(const Rational_bezier_pat
                                                        const Parameter_box& domain) {
   using namespace internal;
   Isolated_point_partners out;
-  for (const auto* P : {&phi, &psi})
-    for (std::size_t i = 0; i <= std::size_t(P->degree_u()); ++i)
-      for (std::size_t j = 0; j <= std::size_t(P->degree_v()); ++j)
-        if (!CGAL::is_positive(P->weight(i, j))) {
-          out.reason = "not all weights are positive: the partners are not decided";
-          return out;
-        }
+  if (!phi.has_positive_weights() || !psi.has_positive_weights()) {
+    out.reason = "not all weights are positive: the partners are not decided";
+    return out;
+  }
   const Rational u = simplest_in(x.u_lo, x.u_hi), t = simplest_in(x.v_lo, x.v_hi);
   {
     Rational d(0);  // D(u, t), exactly

@@ -60,6 +60,13 @@ inline Polynomial_2<Integer> line_factor(bool vertical, const Rational& c) {
   return Polynomial_2<Integer>(Polynomial_1<Integer>(-p), Polynomial_1<Integer>(q));
 }
 
+/// D with the factor of the line removed (D square-free, the line on D = 0), normalized.
+inline Polynomial_2<Integer> without_line(const Polynomial_2<Integer>& D, bool vertical, const Rational& c) {
+  const Polynomial_2<Integer> f = line_factor(vertical, c), q = CGAL::integral_division(D, f);
+  if (q * f != D) throw Error("box_edge_lines: inexact division by a line factor");
+  return normalized_primitive_part(q);
+}
+
 /// The box's edges contained in D = 0 and D with their factors removed.
 struct Box_edge_lines {
   std::vector<int> sides;     ///< sides (0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0) along which D vanishes
@@ -76,12 +83,48 @@ inline Box_edge_lines box_edge_lines(const Polynomial_2<Integer>& D, const Param
     const Rational c = side_value(box, side);
     if (side >= 2 && c == side_value(box, side - 2)) continue;  // a degenerate box: the same line twice
     if (CGAL::is_zero(r.rest) || !vanishes_on_line(r.rest, vertical, c)) continue;
-    const Polynomial_2<Integer> f = line_factor(vertical, c), q = CGAL::integral_division(r.rest, f);
-    if (q * f != r.rest) throw Error("box_edge_lines: inexact division by a line factor");
-    r.rest = normalized_primitive_part(q);
+    r.rest = without_line(r.rest, vertical, c);
     r.sides.push_back(side);
   }
   return r;
+}
+
+/// The rational lines x = c (vertical) and y = c strictly inside the box on which D vanishes: the rational roots of
+/// D's factors in one variable alone (its content as a polynomial in the other variable).
+struct Interior_line {
+  bool vertical = false;
+  Rational value;
+};
+inline std::vector<Interior_line> interior_lines(const Polynomial_2<Integer>& D, const Parameter_box& box) {
+  std::vector<Interior_line> out;
+  if (CGAL::is_zero(D)) return out;
+  Polynomial_1<Integer> in_x(0), in_y(0);  // gcd of the coefficients of y^j, and of x^i
+  int dx = 0;
+  for (int j = 0; j <= D.degree(); ++j) {
+    in_x = CGAL::is_zero(in_x) ? D[j] : Polynomial_1<Integer>(CGAL::gcd(in_x, D[j]));
+    dx = std::max(dx, D[j].degree());
+  }
+  for (int i = 0; i <= dx; ++i) {
+    std::vector<Integer> c;
+    for (int j = 0; j <= D.degree(); ++j) c.push_back(i <= D[j].degree() ? D[j][i] : Integer(0));
+    const Polynomial_1<Integer> p(c.begin(), c.end());
+    if (!CGAL::is_zero(p)) in_y = CGAL::is_zero(in_y) ? p : Polynomial_1<Integer>(CGAL::gcd(in_y, p));
+  }
+  for (const bool vertical : {true, false}) {
+    const Polynomial_1<Integer>& g = vertical ? in_x : in_y;
+    if (CGAL::is_zero(g) || g.degree() < 1) continue;
+    const Rational lo = vertical ? box.u0 : box.v0, hi = vertical ? box.u1 : box.v1;
+    for (const Isolated_root& r : isolate_real_roots(g, lo, hi))
+      if (r.root.is_rational() && lo < r.root.rational_value() && r.root.rational_value() < hi)
+        out.push_back({vertical, r.root.rational_value()});
+  }
+  return out;
+}
+
+/// The box in which a line x = c or y = c is the side 3 (x = x0) or 0 (y = y0): the explanation of an interior
+/// line is that of a side of this box.
+inline Parameter_box box_from_line(const Parameter_box& box, bool vertical, const Rational& c) {
+  return vertical ? Parameter_box{c, box.u1, box.v0, box.v1} : Parameter_box{box.u0, box.u1, c, box.v1};
 }
 
 using Edge_curve = Rational_bezier_curve_3<Rational>;
@@ -125,12 +168,15 @@ inline bool lies_on(const Edge_curve& M, const Edge_curve& C) {
 /// point on the side's own iso-curve C (u = c of the first patch, t = c of the second, or for a self-intersection
 /// u = c or v = c of the patch) lies over the partner domain; the other point lies on an iso-curve M of the partner
 /// at a fixed coordinate c' and runs with τ. If M(τ) lies on C for every τ in the box, every point of the side is
-/// genuine: a collapsed edge (C and M one point) or a boundary curve shared with a side of the partner (the
-/// teapot's glued edges, a closed patch's seam).
+/// genuine: a collapsed edge (C and M one point), a boundary curve shared with a side of the partner (the
+/// teapot's glued edges, a closed patch's seam), or an iso-curve inside the partner domain (a surface tangent to
+/// the other along its boundary, as a fillet along its base; c' comes from a floating-point partner, rounded to
+/// the simplest rational, and the exact test lies_on decides).
 struct Edge_line_explanation {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve };
   Cause cause = unexplained;
-  int partner_side = -1;  ///< the side of the partner domain holding M (boundary_curve order), -1: C itself
+  int partner_side = -1;  ///< the side of the partner domain holding M (boundary_curve order), -1: C itself or inside
+  Rational partner_value;  ///< c', the fixed coordinate of M (the side's own value when C is paired with itself)
   Edge_curve own, other;  ///< C over the partner domain and M over the box (parameters in [0,1])
 };
 
@@ -139,10 +185,13 @@ inline bool within(const Rational& a0, const Rational& a1, const Rational& b0, c
 }
 
 // side: of the box (u = c for sides 1, 3; v or t = c for 0, 2). psi == nullptr: self-intersection of phi.
+// `candidates`: values c' inside the partner domain to try for M besides the domain's sides (intersections).
 inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& box, const Parameter_box& domain,
                                                bool domain_unbounded, const Rational_bezier_patch<Rational>& phi,
-                                               const Rational_bezier_patch<Rational>* psi) {
+                                               const Rational_bezier_patch<Rational>* psi,
+                                               const std::vector<Rational>& candidates = {}) {
   Edge_line_explanation e;
+  e.partner_value = side_value(box, side);
   const bool vertical = side_is_vertical(side);
   const Rational c = side_value(box, side);
   const Parameter_box& d = domain;
@@ -175,6 +224,18 @@ inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& bo
       if (lies_on(M, e.own)) {
         e.cause = own_point ? Edge_line_explanation::collapsed : Edge_line_explanation::shared_curve;
         e.partner_side = ps;
+        e.partner_value = cp;
+        e.other = M;
+        return e;
+      }
+    }
+    for (const Rational& cp : candidates) {  // the partner's iso-curve at c' inside its domain, over the box
+      if (!psi || (vertical ? (cp <= d.u0 || d.u1 <= cp) : (cp <= d.v0 || d.v1 <= cp))) continue;
+      const Edge_curve M = vertical ? other_patch.restriction(cp, cp, box.v0, box.v1).boundary_curve<Edge_curve>(3)
+                                    : other_patch.restriction(box.u0, box.u1, cp, cp).boundary_curve<Edge_curve>(0);
+      if (!own_point && lies_on(M, e.own)) {
+        e.cause = Edge_line_explanation::partner_iso_curve;
+        e.partner_value = cp;
         e.other = M;
         return e;
       }
