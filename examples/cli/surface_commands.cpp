@@ -165,7 +165,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   // sides of the box on D = 0 (collapsed edges, shared boundary curves): not part of the components above
   json edges = json::array();
   static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain",
-                                 "partner_iso_curve"};
+                                 "partner_iso_curve", "collapsed_point_off_partner"};
   for (const auto& e : L.edge_lines) {
     json pts = json::array(), partner = json::array(), p3 = json::array();
     for (const auto& q : e.points) {

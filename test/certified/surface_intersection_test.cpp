@@ -1697,6 +1697,9 @@ TEST_CASE("pieces of one surface: split halves share one boundary curve, proved"
   CHECK(intersection_equation(turned, octant).is_degenerate());
   const Surface_locus S = intersection_locus(turned, octant);
   check_shared_side(S, 3, 1);
+  // the other order: the first reparametrization found, u = (s - 1)/(s + 1), v = 1/t (the antipodal chart), has
+  // poles on both domains; the search goes on to u = (1 + s)/(1 - s), v = t, whose inverse is finite
+  check_shared_side(intersection_locus(octant, turned), 1, 3);
   // quarter cylinders side by side: the line x = 0, y = 1
   const auto quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
   const auto next = power_patch("-2*u", "1 - u^2", "v*(1 + u^2)", "1 + u^2", 2, 1);
@@ -1797,6 +1800,11 @@ void check_one_contact(const Surface_locus& L, const std::array<Q, 2>& projectio
   INFO(L.note);
   REQUIRE(L.topology_computed);
   CHECK(genuine_traced_points(L) == 0);
+  for (const auto& e : L.edge_lines) {  // (the mirrored sphere's pole side: one point, off the octant, proved)
+    INFO(e.description);
+    CHECK(e.status_proved);
+    CHECK_FALSE(e.genuine);
+  }
   int contacts = 0;
   for (const auto& ip : L.isolated_points) {
     INFO(ip.lift.reason);

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -174,7 +175,7 @@ inline Rational simplest_near(double x) {
 
 // Searches Psi = P o M from five points of Psi on the lines s = 1/2 and t = 1/2 (inside, away from collapsed sides).
 inline bool find_reparametrization(const Rational_bezier_patch<Rational>& P, const Rational_bezier_patch<Rational>& Psi,
-                                   Common_parent& M) {
+                                   Common_parent& M, const std::function<bool(const Common_parent&)>& accept) {
   const std::array<Rational, 3> x{Rational(1, 4), Rational(1, 2), Rational(3, 4)};
   // points 0, 1, 2 at (x_i, 1/2), points 3, 1, 4 at (1/2, x_i)
   const std::array<std::array<double, 2>, 5> at{{{0.25, 0.5}, {0.5, 0.5}, {0.75, 0.5}, {0.5, 0.25}, {0.5, 0.75}}};
@@ -207,7 +208,8 @@ inline bool find_reparametrization(const Rational_bezier_patch<Rational>& P, con
               candidate.swapped = swapped;
               candidate.along_u = swapped ? ft : fs;  // u = along_u(t) when swapped
               candidate.along_v = swapped ? fs : ft;
-              if (!is_reparametrization(P, Psi, candidate)) continue;
+              // (a surface may have several: a sphere's (u, v) and its antipodal chart (-1/u, 1/v) name one point)
+              if (!is_reparametrization(P, Psi, candidate) || !accept(candidate)) continue;
               M = candidate;
               M.found = true;
               return true;
@@ -220,20 +222,28 @@ inline bool find_reparametrization(const Rational_bezier_patch<Rational>& P, con
 
 /// \brief Finds a reparametrization M with Psi = Phi o M (see the header), proved by an exact identity of rational
 /// maps. Returns found = false when none is found (which proves nothing).
+/// `accept` may reject a reparametrization found (one with poles on the domains), so that the search goes on.
 inline Common_parent find_common_parent(const Rational_bezier_patch<Rational>& phi,
-                                        const Rational_bezier_patch<Rational>& psi) {
+                                        const Rational_bezier_patch<Rational>& psi,
+                                        const std::function<bool(const Common_parent&)>& accept =
+                                            [](const Common_parent&) { return true; }) {
+  auto inverted = [](const Common_parent& N) {  // Phi = Psi o N  ->  Psi = Phi o N^-1
+    Common_parent M;
+    M.found = N.found;
+    M.swapped = N.swapped;
+    M.along_u = N.swapped ? N.along_v.inverse() : N.along_u.inverse();
+    M.along_v = N.swapped ? N.along_u.inverse() : N.along_v.inverse();
+    return M;
+  };
   Common_parent M;
-  if (internal::find_reparametrization(phi, psi, M)) {
+  if (internal::find_reparametrization(phi, psi, M, accept)) {
     M.reason = "the second patch is the first reparametrized, Psi(s, t) = Phi(u, v) with " + M.text() +
                " (an identity of rational maps, checked exactly)";
     return M;
   }
-  Common_parent N;  // Phi = Psi o N: invert N
-  if (internal::find_reparametrization(psi, phi, N)) {
-    M.found = true;
-    M.swapped = N.swapped;
-    M.along_u = N.swapped ? N.along_v.inverse() : N.along_u.inverse();
-    M.along_v = N.swapped ? N.along_u.inverse() : N.along_v.inverse();
+  Common_parent N;
+  if (internal::find_reparametrization(psi, phi, N, [&](const Common_parent& n) { return accept(inverted(n)); })) {
+    M = inverted(N);
     M.reason = "the first patch is the second reparametrized, Psi(s, t) = Phi(u, v) with " + M.text() +
                " (an identity of rational maps, checked exactly)";
     return M;
@@ -248,7 +258,16 @@ inline Common_parent_intersection intersect_common_parent(const Rational_bezier_
                                                           const Rational_bezier_patch<Rational>& psi,
                                                           const internal::Rectangle& D1, const internal::Rectangle& D2) {
   Common_parent_intersection out;
-  out.relation = find_common_parent(phi, psi);
+  // a map that, or whose inverse, is finite on the domain it is applied to (so that a hull H exists)
+  auto usable = [&](const Common_parent& M) {
+    const bool sw = M.swapped;
+    const bool forward = M.along_u.finite_on(sw ? D2[2] : D2[0], sw ? D2[3] : D2[1]) &&
+                         M.along_v.finite_on(sw ? D2[0] : D2[2], sw ? D2[1] : D2[3]);
+    const bool backward = M.along_u.inverse().finite_on(D1[0], D1[1]) && M.along_v.inverse().finite_on(D1[2], D1[3]);
+    return forward || backward;
+  };
+  out.relation = find_common_parent(phi, psi, usable);
+  if (!out.relation.found) out.relation = find_common_parent(phi, psi);
   out.reason = out.relation.reason;
   if (!out.relation.found) return out;
   out.related = true;

@@ -478,6 +478,12 @@ inline std::vector<Rational> edge_line_partner_candidates(int side, const Parame
   return {r};
 }
 
+// Every point of the line is genuine (collapsed, shared_curve, partner_iso_curve)
+inline bool is_genuine_cause(Edge_line_explanation::Cause c) {
+  return c == Edge_line_explanation::collapsed || c == Edge_line_explanation::shared_curve ||
+         c == Edge_line_explanation::partner_iso_curve;
+}
+
 // The explanation of an edge line (a side of the box, or an interior line as a side of box_from_line).
 inline Edge_line_explanation explain(const Locus_edge_line& e, const Surface_intersection_options& o,
                                      const Rational_bezier_patch<Rational>& phi,
@@ -495,8 +501,7 @@ inline bool interior_line_is_genuine(bool vertical, const Rational& c, const Sur
   e.side = vertical ? 3 : 0;
   e.value = c;
   e.interior = true;
-  const auto cause = explain(e, o, phi, psi).cause;
-  return cause != Edge_line_explanation::unexplained && cause != Edge_line_explanation::outside_domain;
+  return is_genuine_cause(explain(e, o, phi, psi).cause);
 }
 
 // The box's sides on D = 0 (found by topology_is_affordable): their cause (intersection/internal/box_edge_lines.h) and sample
@@ -515,7 +520,7 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
     e.cause = Locus_edge_line::Cause(int(x.cause));
     e.partner_side = x.partner_side;
     e.partner_value = x.partner_value;
-    e.genuine = x.cause != Edge_line_explanation::unexplained && x.cause != Edge_line_explanation::outside_domain;
+    e.genuine = is_genuine_cause(x.cause);
     e.status_proved = x.cause != Edge_line_explanation::unexplained;
     const std::string line = std::string(e.interior ? "line " : "side ") + names[psi ? 1 : 0][e.side] + " = " +
                              std::to_string(CGAL::to_double(e.value));
@@ -534,6 +539,10 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
         e.description = "the " + line + " lies on D = 0: the iso-curve " + (vertical ? "s" : "v") + " = " +
                         io::to_exact_string(x.partner_value) + " of the " + (vertical ? "second" : "first") +
                         " patch lies on it (a common curve), genuine";
+        break;
+      case Edge_line_explanation::point_off_partner:
+        e.description = "the " + line + " lies on D = 0: its iso-curve is one point, off the " +
+                        (vertical ? "second" : "first") + " patch (proved): phantom";
         break;
       case Edge_line_explanation::outside_domain:
         e.description = "the " + line + " lies on D = 0, outside the partner domain: phantom";

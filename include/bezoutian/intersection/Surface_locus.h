@@ -103,10 +103,10 @@ struct Locus_split_point {
 /// edge (an iso-curve of a patch that is one point: every pair of its points, or every point of the other patch at
 /// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
 /// the seam of a closed patch), or an iso-curve of the partner inside its domain (a patch tangent to the other
-/// along its boundary), all genuine at every point; or the side's fixed coordinate lies outside the partner domain
-/// (phantom at every point).
+/// along its boundary), all genuine at every point; or the side's fixed coordinate lies outside the partner domain,
+/// or the side's iso-curve is one point that is not on the partner (phantom at every point).
 struct Locus_edge_line {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner };
   int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
   Rational value;  ///< the fixed coordinate of the side
   /// A line u = value (side 3) or v / t = value (side 0) inside the box rather than a side: removed from D only when
@@ -120,7 +120,7 @@ struct Locus_edge_line {
   /// collapsed / shared_curve / partner_iso_curve: the fixed coordinate of that iso-curve (s for a side u = c, v
   /// for a side t = c)
   Rational partner_value;
-  bool genuine = false;  ///< every point of the side has a partner in the partner domain (all causes but two)
+  bool genuine = false;  ///< every point of the side has a partner in the partner domain (the genuine causes)
   bool status_proved = false;  ///< `genuine` is proved for the whole side (every cause but unexplained)
   std::string description;     ///< one line for people
   /// samples along the side (samples_per_arc + 1, ends included): for a proved cause the partner comes from it (a

@@ -7,11 +7,9 @@
 //
 // When x is rational (the simplest rational of its certified enclosure, D(x) = 0 checked exactly), the fibre
 //   F_c(v, s) = A_c(u, v) B_0(s, t) - B_c(s, t) A_0(u, v),  c = 1, 2, 3   (lifting/double_partner_witness.h)
-// is a system over Q in (v, s) and its real solutions are found exactly. Every common solution has v a root of
-// G = gcd_{i<j} Res_s(F_i, F_j) (a resultant vanishes at the first coordinate of a common root). So no root of G in
-// the partner domain's v range proves that no partner lies in the domain; at a rational root r of G the s of the
-// solutions are the roots of gcd_c F_c(r, s) (exact, an Algebraic_real each). An irrational root of G in the range
-// leaves the point undecided (its fibre would need arithmetic in Q(r)). With positive Bernstein weights A_0 and B_0
+// is a system over Q in (v, s) and its real solutions in the partner domain are found exactly
+// (algebraic/bivariate_real_solutions.h: none proves a phantom; an irrational v leaves the point undecided). With
+// positive Bernstein weights A_0 and B_0
 // are positive on the unit square, so every real solution there is an affine coincidence Phi(u, v) = Psi(s, t).
 //
 // Tangency at a rational partner is decided exactly: with Phi = X / W, W^2 Phi_u = X_u W - X W_u (likewise for v, s,
@@ -20,7 +18,7 @@
 #define BEZOUTIAN_LIFTING_ISOLATED_POINT_PARTNERS_H
 
 #include <bezoutian/algebraic/Algebraic_real.h>
-#include <bezoutian/algebraic/Root_isolation.h>
+#include <bezoutian/algebraic/bivariate_real_solutions.h>
 #include <bezoutian/arithmetic/exact_text.h>
 #include <bezoutian/arithmetic/number_types.h>
 #include <bezoutian/arithmetic/simplest_rational.h>
@@ -55,42 +53,6 @@ struct Isolated_point_partners {
 };
 
 namespace internal {
-
-using Poly1_Q = Polynomial_1<Rational>;
-using Poly2_Q = Polynomial_2<Rational>;
-
-inline Rational evaluate_exact(const Poly1_Q& p, const Rational& x) {
-  Rational r(0);
-  for (int i = p.degree(); i >= 0; --i) r = r * x + p[i];
-  return r;
-}
-
-// p(x, y) for p with inner variable x, outer variable y
-inline Rational evaluate_exact(const Poly2_Q& p, const Rational& x, const Rational& y) {
-  Rational r(0);
-  for (int j = p.degree(); j >= 0; --j) r = r * y + evaluate_exact(p[j], x);
-  return r;
-}
-
-// p(x, .) as a polynomial in the outer variable, and p(., y) in the inner one
-inline Poly1_Q with_inner_fixed(const Poly2_Q& p, const Rational& x) {
-  std::vector<Rational> c;
-  for (int j = 0; j <= p.degree(); ++j) c.push_back(evaluate_exact(p[j], x));
-  return Poly1_Q(c.begin(), c.end());
-}
-inline Poly1_Q with_outer_fixed(const Poly2_Q& p, const Rational& y) {
-  Poly1_Q r(Rational(0));
-  Rational power(1);
-  for (int j = 0; j <= p.degree(); ++j, power *= y) r += p[j] * power;
-  return r;
-}
-
-inline Poly1_Q gcd_of(const std::vector<Poly1_Q>& ps) {
-  Poly1_Q g(Rational(0));
-  for (const Poly1_Q& p : ps)
-    if (!CGAL::is_zero(p)) g = CGAL::is_zero(g) ? p : Poly1_Q(CGAL::gcd(g, p));
-  return g;
-}
 
 // The normal direction of the rational patch with power form f at (x, y): (X_x W - X W_x) x (X_y W - X W_y).
 inline std::array<Rational, 3> exact_normal(const Rational_bezier_patch<Rational>::Power_form& f, const Rational& x,
@@ -168,48 +130,26 @@ inline Isolated_point_partners isolated_point_partners(const Rational_bezier_pat
     }
     F[c - 1] = Poly2_Q(coefficients.begin(), coefficients.end());
   }
-  std::vector<Poly1_Q> resultants;
-  for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = i + 1; j < 3; ++j) {
-      if (CGAL::is_zero(F[i]) || CGAL::is_zero(F[j])) continue;
-      resultants.push_back(F[i].degree() == 0 && F[j].degree() == 0 ? gcd_of({F[i][0], F[j][0]})
-                                                                    : Poly1_Q(CGAL::resultant(F[i], F[j])));
-    }
-  const Poly1_Q G = gcd_of(resultants);
-  if (CGAL::is_zero(G)) {
-    out.reason = "the fibre equations have a common factor: the partners are not decided";
+  const Bivariate_real_solutions fibre =
+      bivariate_real_solutions({F[0], F[1], F[2]}, domain.v0, domain.v1, domain.u0, domain.u1);
+  if (!fibre.decided) {
+    out.reason = "the fibre is not decided: " + fibre.reason;
     return out;
   }
-  for (const Isolated_root& r : isolate_real_roots(G, domain.v0, domain.v1)) {
-    if (!r.root.is_rational()) {
-      out.partners.clear();
-      out.reason = "a partner coordinate v is irrational (a root of degree " +
-                   std::to_string(r.root.polynomial().degree()) + "): the fibre is not decided";
-      return out;
+  for (const auto& vs : fibre.points) {
+    const Rational& v = vs.first;
+    Isolated_point_partners::Partner p;
+    p.v = Algebraic_real(v);
+    p.s = vs.second;
+    p.point = phi.evaluate(CGAL::to_double(u), CGAL::to_double(v));
+    if (vs.second.is_rational()) {
+      const auto n1 = exact_normal(f, u, v), n2 = exact_normal(g, vs.second.rational_value(), t);
+      p.tangency_decided = true;
+      p.singular = is_zero_vector(n1) || is_zero_vector(n2);
+      p.tangent = !p.singular && is_zero_vector({n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
+                                                 n1[0] * n2[1] - n1[1] * n2[0]});
     }
-    const Rational v = r.root.rational_value();
-    std::vector<Poly1_Q> H;
-    for (const Poly2_Q& Fc : F) H.push_back(with_inner_fixed(Fc, v));
-    const Poly1_Q K = gcd_of(H);
-    if (CGAL::is_zero(K)) {
-      out.partners.clear();
-      out.reason = "every s is a partner at v = " + io::to_exact_string(v) + ": the fibre is not decided";
-      return out;
-    }
-    for (const Isolated_root& s : isolate_real_roots(K, domain.u0, domain.u1)) {
-      Isolated_point_partners::Partner p;
-      p.v = Algebraic_real(v);
-      p.s = s.root;
-      p.point = phi.evaluate(CGAL::to_double(u), CGAL::to_double(v));
-      if (s.root.is_rational()) {
-        const auto n1 = exact_normal(f, u, v), n2 = exact_normal(g, s.root.rational_value(), t);
-        p.tangency_decided = true;
-        p.singular = is_zero_vector(n1) || is_zero_vector(n2);
-        p.tangent = !p.singular && is_zero_vector({n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
-                                                   n1[0] * n2[1] - n1[1] * n2[0]});
-      }
-      out.partners.push_back(p);
-    }
+    out.partners.push_back(p);
   }
   out.proved = true;
   out.reason = out.partners.empty()

@@ -3,6 +3,7 @@
 #ifndef BEZOUTIAN_INTERSECTION_INTERNAL_BOX_EDGE_LINES_H
 #define BEZOUTIAN_INTERSECTION_INTERNAL_BOX_EDGE_LINES_H
 
+#include <bezoutian/algebraic/bivariate_real_solutions.h>
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/arithmetic/Error.h>
@@ -171,9 +172,12 @@ inline bool lies_on(const Edge_curve& M, const Edge_curve& C) {
 /// genuine: a collapsed edge (C and M one point), a boundary curve shared with a side of the partner (the
 /// teapot's glued edges, a closed patch's seam), or an iso-curve inside the partner domain (a surface tangent to
 /// the other along its boundary, as a fillet along its base; c' comes from a floating-point partner, rounded to
-/// the simplest rational, and the exact test lies_on decides).
+/// the simplest rational, and the exact test lies_on decides). For two patches a side whose C is one point P not
+/// on the partner over its range is phantom at every point (`point_off_partner`: P is off the partner, proved by
+/// the exact real solutions of X_k - P_k W = 0; D vanishes there through the base points of the collapsed side,
+/// complex zeros of its weight).
 struct Edge_line_explanation {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner };
   Cause cause = unexplained;
   int partner_side = -1;  ///< the side of the partner domain holding M (boundary_curve order), -1: C itself or inside
   Rational partner_value;  ///< c', the fixed coordinate of M (the side's own value when C is paired with itself)
@@ -237,6 +241,17 @@ inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& bo
         e.cause = Edge_line_explanation::partner_iso_curve;
         e.partner_value = cp;
         e.other = M;
+        return e;
+      }
+    }
+    if (psi && own_point && other.has_positive_weights()) {  // (W > 0: every real solution is a point of the patch)
+      const auto P = e.own.control_point(0);
+      const auto f = other.power_form();
+      std::vector<Polynomial_2<Rational>> F;
+      for (std::size_t k = 0; k < 3; ++k) F.push_back(f[k + 1] - f[0] * P[k]);
+      const Bivariate_real_solutions on = bivariate_real_solutions(F, Rational(0), Rational(1), Rational(0), Rational(1));
+      if (on.decided && on.points.empty()) {
+        e.cause = Edge_line_explanation::point_off_partner;
         return e;
       }
     }

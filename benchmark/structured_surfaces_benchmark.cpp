@@ -1,0 +1,356 @@
+// Structured surfaces with closed-form intersections: height fields, cylinders, spheres cut and touched by planes,
+// spheres touching, a cone and a plane tangent along curves, pieces of one surface (halves, overlaps, adjacent
+// octants). For each pair: our certified intersection (answered, certified, complete against dense samples of the
+// closed-form answer, time) and, side by side in the same run when built with OpenCASCADE, GeomAPI_IntSS on the
+// same rational Bezier patches (curves found, completeness by the same measure, points off the true answer, time)
+// with the time ratio. Completeness: the largest 3D distance from a closed-form sample to the reported geometry
+// (polylines of arcs, sheets and edge lines, shared boundary curves, contact points, overlap regions).
+// Peers: bash benchmark/install-peers.sh (Debian libocct-*-dev; benchmark-only). The CMake build defines
+// BEZOUTIAN_WITH_OCCT and links OpenCASCADE for this file when its headers are found.
+// Run:   build/benchmark/structured_surfaces_benchmark [repetitions=5]
+#include <bezoutian/intersection/Surface_intersection.h>
+#include <bezoutian/io/Geometry_document.h>
+
+#ifdef BEZOUTIAN_WITH_OCCT
+#include <GeomAPI_IntSS.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_Curve.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <Standard_Failure.hxx>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace bezoutian;
+using Patch = Rational_bezier_patch<>;
+using P3 = std::array<double, 3>;
+using Polyline = std::vector<P3>;
+
+namespace {
+
+Patch power_patch(const std::string& x, const std::string& y, const std::string& z, const std::string& w, int m,
+                  int n) {
+  const std::string json = "{\"patch\": {\"basis\": \"power\", \"parameters\": [\"u\", \"v\"], \"x\": \"" + x +
+                           "\", \"y\": \"" + y + "\", \"z\": \"" + z + "\", \"w\": \"" + w + "\", \"degree\": [" +
+                           std::to_string(m) + ", " + std::to_string(n) + "]}}";
+  return io::read_json(json, "benchmark").patches.at(0);
+}
+
+struct Family {
+  std::string name, answer;  // the closed-form answer in words
+  Patch phi, psi;
+  std::vector<P3> samples;  // dense samples of the true intersection (empty: none)
+};
+
+double distance(const P3& a, const P3& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+double distance_to_segment(const P3& p, const P3& a, const P3& b) {
+  P3 d{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double L = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  double s = L > 0 ? ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1] + (p[2] - a[2]) * d[2]) / L : 0;
+  s = std::clamp(s, 0.0, 1.0);
+  return distance(p, {a[0] + s * d[0], a[1] + s * d[1], a[2] + s * d[2]});
+}
+
+double distance_to(const P3& p, const std::vector<Polyline>& lines) {
+  double best = 1e300;
+  for (const auto& l : lines) {
+    if (l.size() == 1) best = std::min(best, distance(p, l[0]));
+    for (std::size_t i = 1; i < l.size(); ++i) best = std::min(best, distance_to_segment(p, l[i - 1], l[i]));
+  }
+  return best;
+}
+
+double nearest(const P3& p, const std::vector<P3>& points) {
+  double best = 1e300;
+  for (const P3& q : points) best = std::min(best, distance(p, q));
+  return best;
+}
+
+// the largest distance from a sample of `from` to the geometry `to` (0 if `from` is empty, infinite if `to` is)
+double worst_gap(const std::vector<P3>& from, const std::vector<Polyline>& to) {
+  double worst = 0;
+  for (const P3& p : from) worst = std::max(worst, distance_to(p, to));
+  return worst;
+}
+
+std::vector<P3> circle(const P3& centre, const P3& e1, const P3& e2, double r, double a0, double a1, int n = 400) {
+  std::vector<P3> out;
+  for (int i = 0; i <= n; ++i) {
+    const double a = a0 + (a1 - a0) * i / n;
+    P3 x;
+    for (std::size_t c = 0; c < 3; ++c) x[c] = centre[c] + r * (std::cos(a) * e1[c] + std::sin(a) * e2[c]);
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::vector<Family> families() {
+  std::vector<Family> out;
+  const double pi = std::acos(-1.0);
+  const std::string w = "(1 + u^2)*(1 + v^2)";
+  const Patch octant = power_patch("(1 - v^2)*(1 - u^2)", "2*u*(1 - v^2)", "2*v*(1 + u^2)", w, 2, 2);
+  auto plane_at = [](const std::string& k) { return power_patch("u", "v", "(25*" + k + " - 9*u - 12*v)/20", "1", 1, 1); };
+  const P3 n{9.0 / 25, 12.0 / 25, 0.8}, e1{0.8, -0.6, 0}, e2{12.0 / 25, 16.0 / 25, -0.6};
+  {
+    Family f{"height fields", "quarter circle u^2 + v^2 = 1/2 at z = 1/2", power_patch("u", "v", "u^2 + v^2", "1", 2, 2),
+             power_patch("u", "v", "1 - u^2 - v^2", "1", 2, 2), {}};
+    f.samples = circle({0, 0, 0.5}, {1, 0, 0}, {0, 1, 0}, std::sqrt(0.5), 0, pi / 2);
+    out.push_back(f);
+  }
+  {
+    const auto doc = io::read_geometry_file(std::string(BEZOUTIAN_SOURCE_DIR) + "/examples/data/two_cylinders.json");
+    Family f{"two cylinders", "x = y in [3/5, 1], z = +-sqrt(1 - x^2): two branches", doc.patches[0], doc.patches[1], {}};
+    for (int i = 0; i <= 400; ++i) {
+      const double c = 0.6 + 0.4 * i / 400, z = std::sqrt(std::max(0.0, 1 - c * c));
+      f.samples.push_back({c, c, z});
+      f.samples.push_back({c, c, -z});
+    }
+    out.push_back(f);
+  }
+  {
+    const std::string a = "(u/2)", b = "(1/2+3*v/2)";
+    Family f{"sphere cut by a plane", "latitude circle of radius 15/17, two sheets meeting at a fold",
+             power_patch("(1-" + a + "^2)*(1-" + b + "^2)", "(1-" + a + "^2)*2*" + b, "2*" + a + "*(1+" + b + "^2)",
+                         "(1+" + a + "^2)*(1+" + b + "^2)", 2, 2),
+             power_patch("2*u-1", "v", "8/17", "1", 1, 1), {}};
+    f.samples = circle({0, 0, 8.0 / 17}, {1, 0, 0}, {0, 1, 0}, 15.0 / 17, 2 * std::atan(0.5), 2 * std::atan(2.0));
+    out.push_back(f);
+  }
+  out.push_back({"plane touching a sphere", "the point (9/25, 12/25, 4/5), tangent", octant, plane_at("1"), {n}});
+  out.push_back({"plane 1e-6 above a sphere", "none", octant, plane_at("1000001/1000000"), {}});
+  {
+    const double k = 1 - 1e-6;
+    Family f{"plane 1e-6 below a sphere", "circle of radius 1.414e-3", octant, plane_at("999999/1000000"), {}};
+    f.samples = circle({k * n[0], k * n[1], k * n[2]}, e1, e2, std::sqrt(1 - k * k), 0, 2 * pi);
+    out.push_back(f);
+  }
+  out.push_back({"spheres touching", "the point (9/25, 12/25, 4/5), tangent", octant,
+                 power_patch("18/25*" + w + " - (1 - v^2)*(1 - u^2)", "24/25*" + w + " - 2*u*(1 - v^2)",
+                             "8/5*" + w + " - 2*v*(1 + u^2)", w, 2, 2),
+                 {n}});
+  {
+    Family f{"cone tangent to a sphere", "quarter circle of radius 3/5 at z = 4/5 (tangent curve)", octant,
+             power_patch("(1/2 + v)*3/5*(1 - u^2)", "(1/2 + v)*6/5*u", "(1 + u^2)*(5/4 - 9/20*(1/2 + v))", "1 + u^2", 2,
+                         1),
+             {}};
+    f.samples = circle({0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 0.6, 0, pi / 2);
+    out.push_back(f);
+  }
+  const Patch quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);
+  {
+    Family f{"plane tangent to a cylinder", "the line x = 1, y = 0, z in [0, 1] (tangent curve)", quarter,
+             power_patch("1", "2*u - 1", "v", "1", 1, 1), {}};
+    for (int i = 0; i <= 400; ++i) f.samples.push_back({1, 0, i / 400.0});
+    out.push_back(f);
+  }
+  const Patch paraboloid = power_patch("2*u - 1", "2*v - 1", "(2*u - 1)^2 + (2*v - 1)^2", "1", 2, 2);
+  {
+    const auto halves = paraboloid.split_u(Rational(1, 2));
+    Family f{"paraboloid halves", "shared boundary x = 0, z = y^2", halves.first, halves.second, {}};
+    for (int i = 0; i <= 400; ++i) {
+      const double y = -1 + 2.0 * i / 400;
+      f.samples.push_back({0, y, y * y});
+    }
+    out.push_back(f);
+  }
+  {
+    Family f{"overlapping paraboloid pieces", "the region x in [-1/5, 1/5] (an overlap)",
+             paraboloid.restriction(Rational(0), Rational(3, 5), Rational(0), Rational(1)),
+             paraboloid.restriction(Rational(2, 5), Rational(1), Rational(0), Rational(1)), {}};
+    for (int i = 0; i <= 40; ++i)
+      for (int j = 0; j <= 40; ++j) {
+        const double x = -0.2 + 0.4 * i / 40, y = -1 + 2.0 * j / 40;
+        f.samples.push_back({x, y, x * x + y * y});
+      }
+    out.push_back(f);
+  }
+  {
+    Family f{"adjacent sphere octants", "the shared meridian x = 0", octant,
+             power_patch("-2*u*(1 - v^2)", "(1 - v^2)*(1 - u^2)", "2*v*(1 + u^2)", w, 2, 2), {}};
+    f.samples = circle({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1, 0, pi / 2);
+    out.push_back(f);
+  }
+  return out;
+}
+
+// Our reported geometry: sheets, edge lines, isolated contacts, shared boundary curves, overlap regions.
+struct Ours {
+  bool answered = false, certified = false;
+  std::vector<Polyline> geometry;
+  std::string note;
+};
+
+Ours ours(const Family& f) {
+  Ours out;
+  Surface_intersection_options o;
+  o.polyline_tolerance = 1e-4;
+  Surface_locus L;
+  try {
+    L = intersection_locus(f.phi, f.psi, o);
+  } catch (const std::exception& e) {
+    out.note = e.what();
+    return out;
+  }
+  out.answered = L.topology_computed;
+  out.certified = L.topology_computed;
+  out.note = L.note;
+  for (const auto& a : L.arcs) {
+    bool genuine = false;
+    for (const auto& q : a.points) genuine = genuine || q.genuine;
+    if (genuine || a.undecided_fraction > 0) out.certified = out.certified && a.undecided_fraction == 0 &&
+                                                             a.fibre_undecided_fraction == 0;
+    for (const auto& s : a.sheets) {
+      Polyline l;
+      for (const auto& q : s.points) l.push_back(q.point_3d);
+      out.geometry.push_back(l);
+    }
+  }
+  for (const auto& e : L.edge_lines) {
+    out.certified = out.certified && e.status_proved;
+    if (!e.genuine) continue;
+    Polyline l;
+    for (const auto& q : e.points) l.push_back(q.point_3d);
+    out.geometry.push_back(l);
+  }
+  for (const auto& ip : L.isolated_points) {
+    out.certified = out.certified && ip.lift.proved;
+    for (const auto& p : ip.lift.partners) out.geometry.push_back({p.point});
+  }
+  for (const auto& c : L.contacts) {
+    if (!c.shared_curve) {
+      out.geometry.push_back({c.point});
+      continue;
+    }
+    const auto curve = f.phi.boundary_curve<Rational_bezier_curve_3<Rational>>(c.side_first);
+    Polyline l;
+    const double a = c.first_0.to_double(), b = c.first_1.to_double();
+    for (int i = 0; i <= 200; ++i) {
+      const auto p = curve.evaluate(a + (b - a) * i / 200);
+      l.push_back({p[0], p[1], p[2]});
+    }
+    out.geometry.push_back(l);
+  }
+  for (const auto& ov : L.overlaps) {
+    const auto& r = ov.first;
+    const double u0 = CGAL::to_double(r[0]), u1 = CGAL::to_double(r[1]), v0 = CGAL::to_double(r[2]),
+                 v1 = CGAL::to_double(r[3]);
+    for (int i = 0; i <= 200; ++i) {  // iso-lines of the region, 1/200 of it apart
+      Polyline l;
+      for (int j = 0; j <= 200; ++j) l.push_back(f.phi.evaluate(u0 + (u1 - u0) * i / 200, v0 + (v1 - v0) * j / 200));
+      out.geometry.push_back(l);
+    }
+  }
+  return out;
+}
+
+#ifdef BEZOUTIAN_WITH_OCCT
+Handle(Geom_BezierSurface) occt_surface(const Patch& p) {
+  const int m = p.degree_u(), n = p.degree_v();
+  TColgp_Array2OfPnt poles(1, m + 1, 1, n + 1);
+  TColStd_Array2OfReal weights(1, m + 1, 1, n + 1);
+  for (int i = 0; i <= m; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const auto& h = p.homogeneous_control_point(std::size_t(i), std::size_t(j));
+      const double wt = CGAL::to_double(h[0]);
+      poles.SetValue(i + 1, j + 1, gp_Pnt(CGAL::to_double(h[1] / h[0]), CGAL::to_double(h[2] / h[0]),
+                                          CGAL::to_double(h[3] / h[0])));
+      weights.SetValue(i + 1, j + 1, wt);
+    }
+  return new Geom_BezierSurface(poles, weights);
+}
+
+struct Theirs {
+  bool done = false;
+  int curves = 0;
+  std::vector<Polyline> geometry;
+};
+
+Theirs occt(const Handle(Geom_BezierSurface) & a, const Handle(Geom_BezierSurface) & b) {
+  Theirs out;
+  try {
+    GeomAPI_IntSS inter(a, b, 1e-7);
+    out.done = inter.IsDone();
+    if (!out.done) return out;
+    out.curves = inter.NbLines();
+    for (int k = 1; k <= inter.NbLines(); ++k) {
+      const Handle(Geom_Curve) c = inter.Line(k);
+      const double t0 = std::max(c->FirstParameter(), -10.0), t1 = std::min(c->LastParameter(), 10.0);
+      Polyline l;
+      for (int i = 0; i <= 400; ++i) {
+        const gp_Pnt p = c->Value(t0 + (t1 - t0) * i / 400);
+        l.push_back({p.X(), p.Y(), p.Z()});
+      }
+      out.geometry.push_back(l);
+    }
+  } catch (const Standard_Failure&) {
+    out.done = false;
+  }
+  return out;
+}
+#endif
+
+template <class F>
+double median_seconds(int repetitions, F f) {
+  std::vector<double> t;
+  for (int r = 0; r < repetitions; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  std::sort(t.begin(), t.end());
+  return t[t.size() / 2];
+}
+
+std::string gap_text(double g) {
+  char buf[32];
+  if (!std::isfinite(g) || g > 1e100) return "missing";
+  std::snprintf(buf, sizeof buf, "%.1e", g);
+  return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  std::printf("| family | closed-form answer | ours: answered | certified | gap to the answer | time [ms] |"
+#ifdef BEZOUTIAN_WITH_OCCT
+              " OCCT: curves | gap to the answer | farthest OCCT point off it | time [ms] | time ratio ours/OCCT |"
+#endif
+              "\n|---|---|---|---|---|---|"
+#ifdef BEZOUTIAN_WITH_OCCT
+              "---|---|---|---|---|"
+#endif
+              "\n");
+  for (const Family& f : families()) {
+    Ours r;
+    const double t_ours = median_seconds(repetitions, [&] { r = ours(f); });
+    const double gap = f.samples.empty() ? (r.geometry.empty() ? 0 : -1) : worst_gap(f.samples, r.geometry);
+    std::printf("| %s | %s | %s | %s | %s | %.2f |", f.name.c_str(), f.answer.c_str(), r.answered ? "yes" : "no",
+                r.certified ? "yes" : "no",
+                gap < 0 ? "spurious" : (f.samples.empty() ? "none, proved" : gap_text(gap)).c_str(), 1e3 * t_ours);
+#ifdef BEZOUTIAN_WITH_OCCT
+    const auto A = occt_surface(f.phi), B = occt_surface(f.psi);
+    Theirs s;
+    const double t_occt = median_seconds(repetitions, [&] { s = occt(A, B); });
+    double off = 0;
+    for (const auto& l : s.geometry)
+      for (const P3& p : l)
+        off = std::max(off, nearest(p, f.samples));
+    const double their_gap = f.samples.empty() ? 0 : worst_gap(f.samples, s.geometry);
+    std::printf(" %s | %s | %s | %.2f | %.1f |", s.done ? std::to_string(s.curves).c_str() : "failed",
+                f.samples.empty() ? (s.curves == 0 ? "none" : "spurious") : gap_text(their_gap).c_str(),
+                s.geometry.empty() ? "-" : gap_text(off).c_str(), 1e3 * t_occt, t_occt > 0 ? t_ours / t_occt : 0.0);
+#endif
+    std::printf("\n");
+  }
+}
