@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
+#include <mutex>
 #include <vector>
 
 #if !defined(__SIZEOF_INT128__)
@@ -137,23 +138,19 @@ inline bool is_prime_u64(u64 n) {
   return true;
 }
 
-/// The i-th prime below 2^62 in decreasing order (i = 0 is the largest).
-/// The first 64 are computed once (thread-safe static); further ones are
-/// searched on demand (not cached).
+/// The i-th prime below 2^62 in decreasing order (i = 0 is the largest). Each is found once and kept (thread-safe).
 inline u64 word_prime(std::size_t i) {
-  static const std::vector<u64> table = [] {
-    std::vector<u64> t;
-    for (u64 c = (static_cast<u64>(1) << 62) - 1; t.size() < 64; c -= 2)
-      if (is_prime_u64(c)) t.push_back(c);
-    return t;
-  }();
-  if (i < table.size()) return table[i];
-  u64 c = table.back() - 2;
-  for (std::size_t k = table.size();; c -= 2)
-    if (is_prime_u64(c)) {
-      if (k == i) return c;
-      ++k;
-    }
+  // computed once, in order, and kept: callers ask for primes 0, 1, 2, ... in loops (the determinant engine, the
+  // square-free part), so a search from the start on each call would cost quadratically in the number of primes;
+  // the mutex makes concurrent callers safe (each prime below 2^62 costs one deterministic Miller-Rabin test per
+  // odd candidate, about 1 in 43 candidates being prime)
+  static std::mutex mutex;
+  static std::vector<u64> primes;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (primes.empty()) primes.reserve(1024);
+  for (u64 c = primes.empty() ? (static_cast<u64>(1) << 62) - 1 : primes.back() - 2; primes.size() <= i; c -= 2)
+    if (is_prime_u64(c)) primes.push_back(c);
+  return primes[i];
 }
 
 /// Chinese remaindering for many values modulo the same primes p_0..p_{k-1}

@@ -425,19 +425,8 @@ struct Quotient_dimension {
   bool equals(int count) const { return count == value; }
 };
 
-/// The k-th word prime (word_prime's order), cached: word_prime searches anew beyond its table of 64.
-inline u64 cached_word_prime(std::size_t k) {
-  static std::mutex mutex;
-  static std::vector<u64> primes;
-  std::lock_guard<std::mutex> lock(mutex);
-  if (primes.empty()) primes.push_back(word_prime(0));
-  while (primes.size() <= k) {
-    u64 c = primes.back() - 2;
-    while (!is_prime_u64(c)) c -= 2;
-    primes.push_back(c);
-  }
-  return primes[k];
-}
+/// The k-th word prime (word_prime itself keeps the primes it has found).
+inline u64 cached_word_prime(std::size_t k) { return word_prime(k); }
 
 /// The primitive integer multiple of a rational polynomial.
 inline Dense_Z primitive_integer_dense(const Dense_Q& f) {
