@@ -26,7 +26,7 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
   sub->add_option("--max-degree", o->max_degree, "patches: largest total degree of D for CGAL's curve analysis");
   sub->add_option("--fallback-seconds", o->fallback_seconds,
                   "patches: stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: "
-                  "no limit)");
+                  "no limit; POSIX systems)");
   sub->add_option("--patches", o->patches, "patches: indices I,J (0-based) of the two patches, I in FILE_A, J in FILE_B (default 0,0), or both in FILE_A (default 0,1)");
   sub->add_option("--domain", *domain, "patches: partner domain v0,v1,s0,s1 (default 0,1,0,1) or 'none'");
   sub->add_flag("--json", o->json, "machine-readable output");

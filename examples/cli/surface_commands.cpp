@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -24,6 +25,9 @@
 #include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#endif
+#if defined(__linux__)
+#include <sys/prctl.h>
 #endif
 
 namespace bezoutian_cli {
@@ -535,8 +539,10 @@ void report(bool self, const Patch& a, const Patch* b, const Intersect_options& 
 // huge coordinates ran for minutes, doc/surface_intersection.md). So the locus is first computed without it; only if
 // the fallback would run (the topology not certified, D of total degree <= --max-degree) is it computed again with
 // the fallback, in a child process whose standard output is kept. If the child has not finished after
-// o.fallback_seconds it is stopped, and the first result is reported, its note saying so. Returns false if the
-// child could not be started (the caller then computes in this process).
+// o.fallback_seconds it is stopped, and the first result is reported, its note saying so; likewise if the child
+// fails (an error, or killed by a signal). The child dies with this process (PR_SET_PDEATHSIG on Linux; elsewhere
+// it is killed when the limit is reached). Returns false if the child could not be started (the caller then
+// computes in this process).
 bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Intersect_options& o,
                             const bezoutian::Surface_intersection_options& so) {
   bezoutian::Surface_intersection_options first = so;
@@ -562,6 +568,7 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
   if (pipe(fd) != 0) return false;
   std::cout.flush();
   std::cerr.flush();
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0) {
     close(fd[0]);
@@ -569,6 +576,12 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
     return false;
   }
   if (pid == 0) {  // the child: the whole report with the fallback, its standard output into the pipe
+#if defined(__linux__)
+    // killed when the parent dies (SIGTERM, a crash); the parent may already be gone before this call
+    if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(4);
+#else
+    (void)parent;
+#endif
     close(fd[0]);
     dup2(fd[1], STDOUT_FILENO);
     close(fd[1]);
@@ -611,15 +624,18 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (finished) {
+  if (finished && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
     std::cout << out << std::flush;
-    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-    if (WIFEXITED(status)) std::exit(WEXITSTATUS(status));  // the child has printed its error
-    throw std::runtime_error("the computation ended with signal " + std::to_string(WTERMSIG(status)));
+    return true;
   }
   std::ostringstream why;
-  why << "CGAL's whole-plane curve analysis (total degree " << total << " <= --max-degree " << o.max_degree
-      << ") was stopped after " << o.fallback_seconds << " s (--fallback-seconds)";
+  why << "CGAL's whole-plane curve analysis (total degree " << total << " <= --max-degree " << o.max_degree << ") ";
+  if (!finished)
+    why << "was stopped after " << o.fallback_seconds << " s (--fallback-seconds)";
+  else if (WIFSIGNALED(status))
+    why << "ended with signal " << WTERMSIG(status) << " (" << strsignal(WTERMSIG(status)) << ")";
+  else
+    why << "failed (exit code " << WEXITSTATUS(status) << ", its error above)";
   const std::string not_attempted = "CGAL's whole-plane curve analysis is not attempted above "
                                     "max_total_degree_for_topology = 0";
   const std::size_t at = L.note.find(not_attempted);
@@ -647,6 +663,10 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   if (!(o.fallback_seconds >= 0)) throw bezoutian::Invalid_input("--fallback-seconds must be >= 0 (0: no limit)");
 #if defined(__unix__)
   if (o.max_degree > 0 && o.fallback_seconds > 0 && report_with_time_limit(self, a, b, o, so)) return;
+#else
+  if (o.max_degree > 0 && o.fallback_seconds > 0)
+    std::cerr << "warning: --fallback-seconds needs a POSIX system (fork): CGAL's curve analysis, where it runs, has "
+                 "no time limit here; --max-degree 0 turns it off\n";
 #endif
   report(self, a, b, o, so);
 }
@@ -707,7 +727,8 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_option("--fallback-seconds", o->fallback_seconds,
-                  "stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: no limit)");
+                  "stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: no limit; "
+                  "POSIX systems)");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->callback([o, domain] {
     Patch p = patch_of(o->file_a, patch_indices(o->patches, true).first);
