@@ -132,9 +132,10 @@ TEST_CASE("exact numbers: integers, fractions, decimals and hex floats", "[forma
   }
 }
 
-TEST_CASE("exact numbers: a 10,000-digit numerator parses exactly", "[formats][numbers]") {
+TEST_CASE("exact numbers: a 1,200-digit numerator parses exactly, a 10,000-digit one is refused", "[formats][numbers]") {
+  // 1,200 digits: about 3,986 bits, under max_number_bits = 4096
   std::string digits;
-  for (int i = 0; i < 10000; ++i) digits += char('0' + (i * 7 + 3) % 10);
+  for (int i = 0; i < 1200; ++i) digits += char('1' + (i * 7 + 3) % 9);
   const Integer n(digits);  // GMP's own reader
   const Rational r = exact_number(digits + "/7");
   CHECK(r * Rational(7) == Rational(n));
@@ -144,6 +145,15 @@ TEST_CASE("exact numbers: a 10,000-digit numerator parses exactly", "[formats][n
   REQUIRE(d.curves_2.size() == 1);
   CHECK(d.curves_2[0].control_point(0)[0] == r);
   CHECK(d.curves_2[0].control_point(1)[0] == Rational(n));
+  // 10,000 digits (33,216 bits or so): refused, saying why
+  std::string many;
+  for (int i = 0; i < 10000; ++i) many += char('1' + (i * 7 + 3) % 9);
+  const Exact_number_result big = parse_exact_number(many);
+  CHECK_FALSE(big.ok);
+  CHECK(big.error_offset == 0);
+  CHECK(big.message.find("number too large") != std::string::npos);
+  CHECK_THROWS_WITH(read_json("{\"curve\": {\"points\": [[0, 0], [" + many + ", 1]]}}"),
+                    Catch::Contains("number too large"));
 }
 
 TEST_CASE("exact numbers: printing round-trips", "[formats][numbers]") {
@@ -544,6 +554,8 @@ TEST_CASE("bad JSON input: Parse_error at the offending value", "[formats][error
       {"{\"curve\": {\"points\": [[0, 0], [1, 0@x1p3]]}}", "hex floats and fractions must be strings"},
       {"{\"curve\": {\"points\": [[0, 0@7]]}}", "leading zeros"},
       {"{\"curve\": {\"points\": [[0, 0], [\"1e@999999\", 1]]}}", "exponent too large"},
+      {"{\"curve\": {\"points\": [[0, 0], [1, \"@1e-3000\"]]}}", "number too large: 9966 bits in its denominator"},
+      {"{\"curve\": {\"points\": [[0, 0], [\"@0x1p5000\", 1]]}}", "number too large: 5001 bits in its numerator"},
       {"{\"curve\": {\n  \"degree\": 3,\n  \"points\": @[[0, 0], [1, 1], [2, 0]]\n}}", "expected 4 control points (degree 3), got 3"},
       {"{\"curve\": {\"points\": [[0, 0], [1, 1], [2, 0]],\n \"weights\": @[1, 2]}}", "expected 3 weights"},
       {"{\"curve\": {\"points\": [[0, 0], @[1, 1, 1]]}}", "expected every control point to have 2 coordinates"},

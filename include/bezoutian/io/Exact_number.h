@@ -22,6 +22,11 @@ namespace io {
 constexpr long max_decimal_exponent = 100000;
 /// Largest |exponent| accepted in a hexadecimal float ("0x1p-400000").
 constexpr long max_binary_exponent = 400000;
+/// Largest size, in bits, of the numerator and of the denominator of one number read (1e1000 has 3,322 bits; a
+/// double's range ends near 1e308). Coefficients beyond it are refused as input: the modular resultants that curves
+/// with such coefficients reach cost far more than their size suggests (a quadratic with the coordinate 1e3000 never
+/// finished).
+constexpr std::size_t max_number_bits = 4096;
 
 /// Outcome of parsing a number: the value, or the offset of the offending character and what was expected.
 struct Exact_number_result {
@@ -129,6 +134,13 @@ inline bool scan_unsigned_number(const std::string& text, std::size_t& pos, Rati
     else
       den = power;
   }
+  for (const Integer* part : {&num, &den})
+    if (!CGAL::is_zero(*part) && mpz_sizeinbase(part->mpz(), 2) > max_number_bits) {
+      error_offset = pos;
+      message = "number too large: " + std::to_string(mpz_sizeinbase(part->mpz(), 2)) + " bits in its " +
+                (part == &num ? "numerator" : "denominator") + " (at most " + std::to_string(max_number_bits) + ")";
+      return false;
+    }
   value = Rational(num, den);
   pos = p;
   return true;
