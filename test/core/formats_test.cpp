@@ -217,6 +217,10 @@ TEST_CASE("polynomial expressions: errors give the offending offset", "[formats]
   CHECK_THROWS_AS(parse_polynomial_1(std::string(100000, '-') + "t", "t"), Expression_error);
   CHECK_THROWS_AS(parse_polynomial_1("(1e100000)^10000", "t"), Expression_error);
   CHECK_THROWS_AS(parse_polynomial_1("((t+1)^50)^50", "t"), Expression_error);
+  // coefficients grown by expansion are bounded like numbers read: (10^1000)^2 t has 6,644 bits, 10^1000 t 3,322
+  CHECK_THROWS_WITH(parse_polynomial_1("(1e1000)^2*t", "t"), Catch::Contains("has 6644 bits (at most 4096)"));
+  CHECK_THROWS_WITH(parse_polynomial_1("1e1000*1e1000*t + 1", "t"), Catch::Contains("bits (at most 4096)"));
+  CHECK(parse_polynomial_1("1e1000*t", "t") == Polynomial_1<Rational>(Rational(0), exact_number("1e1000")));
 }
 
 // --------------------------------------------------------------------------------- dhermes fixtures

@@ -45,9 +45,12 @@ class Expression_error : public Invalid_input {
 /// Bounds that keep every expression cheap to expand.
 struct Expression_limits {
   int max_degree = 100;      ///< largest degree in each variable, of the result and of every intermediate
-  long max_exponent = 10000; ///< largest exponent after '^' (also for constants: (3/2)^10000 is fine)
+  long max_exponent = 10000; ///< largest exponent after '^'
   int max_depth = 200;       ///< deepest nesting of parentheses / unary signs
-  long max_constant_power_bits = 10000000;  ///< largest size of a constant power such as 7^1000
+  long max_constant_power_bits = 10000000;  ///< largest size of a constant power such as 7^1000, while expanding
+  /// Largest numerator and denominator, in bits, of a coefficient of the expanded result (as for a number read,
+  /// io::max_number_bits): products and powers of constants cannot bring the engine coefficients it cannot afford.
+  std::size_t max_coefficient_bits = max_number_bits;
 };
 
 namespace internal {
@@ -72,6 +75,12 @@ class Expression_parser {
     if (pos_ < s_.size())
       throw Expression_error(pos_, "unexpected " + quoted_char(s_[pos_]) +
                                        "; expected an operator (+ - * / ^) or the end of the expression");
+    for (const auto& t : p)
+      for (mpz_srcptr z : {mpq_numref(t.second.mpq()), mpq_denref(t.second.mpq())})
+        if (mpz_sizeinbase(z, 2) > lim_.max_coefficient_bits)
+          throw Expression_error(0, "a coefficient of the expanded polynomial has " +
+                                        std::to_string(mpz_sizeinbase(z, 2)) + " bits (at most " +
+                                        std::to_string(lim_.max_coefficient_bits) + ")");
     return p;
   }
 
