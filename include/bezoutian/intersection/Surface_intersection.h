@@ -490,7 +490,7 @@ inline Edge_line_explanation explain(const Locus_edge_line& e, const Surface_int
                                      const Rational_bezier_patch<Rational>* psi) {
   const Parameter_box b = e.interior ? box_from_line(o.box, side_is_vertical(e.side), e.value) : o.box;
   return explain_edge_line(e.side, b, o.partner_domain, o.partner_domain_unbounded, phi, psi,
-                           edge_line_partner_candidates(e.side, b, o, phi, psi));
+                           [&] { return edge_line_partner_candidates(e.side, b, o, phi, psi); });
 }
 
 // Whether the interior line x = c or y = c is proved genuine at every point (topology_is_affordable)

@@ -14,6 +14,7 @@
 #include <bezoutian/arithmetic/number_types.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace bezoutian {
@@ -189,11 +190,12 @@ inline bool within(const Rational& a0, const Rational& a1, const Rational& b0, c
 }
 
 // side: of the box (u = c for sides 1, 3; v or t = c for 0, 2). psi == nullptr: self-intersection of phi.
-// `candidates`: values c' inside the partner domain to try for M besides the domain's sides (intersections).
+// `candidates`: values c' inside the partner domain to try for M besides the domain's sides (intersections), asked
+// for only when the sides do not explain the line (a floating-point search).
 inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& box, const Parameter_box& domain,
                                                bool domain_unbounded, const Rational_bezier_patch<Rational>& phi,
                                                const Rational_bezier_patch<Rational>* psi,
-                                               const std::vector<Rational>& candidates = {}) {
+                                               const std::function<std::vector<Rational>()>& candidates = {}) {
   Edge_line_explanation e;
   e.partner_value = side_value(box, side);
   const bool vertical = side_is_vertical(side);
@@ -233,7 +235,7 @@ inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& bo
         return e;
       }
     }
-    for (const Rational& cp : candidates) {  // the partner's iso-curve at c' inside its domain, over the box
+    for (const Rational& cp : candidates ? candidates() : std::vector<Rational>{}) {  // M inside the domain
       if (!psi || (vertical ? (cp <= d.u0 || d.u1 <= cp) : (cp <= d.v0 || d.v1 <= cp))) continue;
       const Edge_curve M = vertical ? other_patch.restriction(cp, cp, box.v0, box.v1).boundary_curve<Edge_curve>(3)
                                     : other_patch.restriction(box.u0, box.u1, cp, cp).boundary_curve<Edge_curve>(0);
