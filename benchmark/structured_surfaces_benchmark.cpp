@@ -1,4 +1,4 @@
-// Structured surfaces with closed-form intersections: height fields, cylinders, spheres cut and touched by planes,
+// Structured surfaces with closed-form intersections: height fields, cylinders, orthogonal extrusions, spheres cut and touched by planes,
 // spheres touching, a cone and a plane tangent along curves, pieces of one surface (halves, overlaps, adjacent
 // octants). For each pair: our certified intersection (answered, certified, complete against dense samples of the
 // closed-form answer, time) and, side by side in the same run when built with OpenCASCADE, GeomAPI_IntSS on the
@@ -144,6 +144,18 @@ std::vector<Family> families() {
                          1),
              {}};
     f.samples = circle({0, 0, 0.8}, {1, 0, 0}, {0, 1, 0}, 0.6, 0, pi / 2);
+    out.push_back(f);
+  }
+  {
+    // det B vanishes identically (a common root at infinity for every (u, t)): D from the maximal minors of B
+    Family f{"orthogonal extrusions", "y = x^2 along z meets y = 1 - z^2 along x: z = +-sqrt(1 - x^2), two branches",
+             power_patch("2*u - 1", "(2*u - 1)^2", "2*v - 1", "1", 2, 1),
+             power_patch("2*v - 1", "1 - (2*u - 1)^2", "2*u - 1", "1", 2, 1), {}};
+    for (int i = 0; i <= 400; ++i) {
+      const double x = -1 + 2.0 * i / 400, z = std::sqrt(std::max(0.0, 1 - x * x));
+      f.samples.push_back({x, x * x, z});
+      f.samples.push_back({x, x * x, -z});
+    }
     out.push_back(f);
   }
   const Patch quarter = power_patch("1 - u^2", "2*u", "v*(1 + u^2)", "1 + u^2", 2, 1);

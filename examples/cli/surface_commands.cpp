@@ -104,6 +104,10 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   json j;
   j["equation_computed"] = L.equation_computed;  // false: answered by a direct proof, without elimination
   j["matrix_size"] = L.equation.matrix.size();
+  // where D comes from: "determinant" (det B) or "maximal_minors" (det B = 0; the gcd of maximal minors of rank r)
+  j["elimination_route"] =
+      L.equation.route == bezoutian::Implicit_equation::Route::maximal_minors ? "maximal_minors" : "determinant";
+  j["matrix_generic_rank"] = L.equation.generic_rank;
   json terms = json::array();
   for (const auto& t : L.equation.terms()) terms.push_back({std::get<0>(t), std::get<1>(t), text(std::get<2>(t))});
   j["implicit"] = {{"variables", {L.equation.variables[0], L.equation.variables[1]}},
@@ -417,7 +421,10 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
   const auto& e = L.equation;
   std::cout << (L.self_intersection ? "Self-intersection" : "Intersection") << " locus: ";
   if (L.equation_computed)
-    std::cout << "Bezoutian matrix " << e.matrix.size() << " x " << e.matrix.size() << ", ";
+    std::cout << "Bezoutian matrix " << e.matrix.size() << " x " << e.matrix.size() << ", "
+              << (e.route == bezoutian::Implicit_equation::Route::maximal_minors
+                      ? "det B = 0, of rank " + std::to_string(e.generic_rank) + " (proved): gcd of maximal minors, "
+                      : std::string());
   else
     std::cout << "no elimination (" << L.note << ")" << (CGAL::is_zero(e.determinant) ? "" : ", ");
   if (L.equation_computed || !CGAL::is_zero(e.determinant))

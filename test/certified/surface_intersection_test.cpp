@@ -1933,3 +1933,80 @@ TEST_CASE("tangential contacts along a curve: a plane along a cylinder's boundar
     CHECK(std::fabs(q.first[1] - 0.5) < 1e-12);
   }
 }
+
+TEST_CASE("orthogonal extrusions: det B vanishes identically, the maximal minors give the curve, every branch lifted",
+          "[surface][structured][minors]") {
+  // Phi = (x, x^2, z) with x = 2u - 1, z = 2v - 1 (y = x^2 extruded along z); Psi = (x, 1 - z^2, z) with
+  // x = 2t - 1, z = 2s - 1 (y = 1 - z^2 extruded along x). The homogenized partner equations share the root
+  // (v, s) = (inf, inf) at every (u, t), so det B = 0. The curve: x in [-1, 1], y = x^2, z = +-sqrt(1 - x^2): two
+  // branches over the one projected line u = t, meeting at x = +-1 (the corners of the (u, t) box).
+  const Patch phi = from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
+  const Patch psi = from_power({"2*v-1", "1-(2*u-1)^2", "2*u-1"}, 2, 1);  // (s, t) read as (u, v)
+  CHECK(intersection_equation(phi, psi).is_degenerate());  // the determinant route alone has no answer
+  Surface_intersection_options fine;
+  fine.polyline_tolerance = 1e-3;
+  const Surface_locus L = intersection_locus(phi, psi, fine);
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(L.equation.route == Implicit_equation::Route::maximal_minors);
+  CHECK(L.equation.generic_rank == 1);  // B is 2 x 2 with a one-dimensional kernel everywhere
+  // D = u - t: every point of the line, and nothing else
+  CHECK(L.equation.square_free.degree() == 1);
+  std::size_t sheets = 0;
+  for (const auto& a : L.arcs)
+    for (const auto& s : a.sheets) {
+      ++sheets;
+      for (const auto& q : s.points) {
+        const auto& p = q.point_3d;
+        CHECK(std::fabs(p[1] - p[0] * p[0]) < 1e-9);  // on both closed-form surfaces
+        CHECK(std::fabs(p[1] - 1 + p[2] * p[2]) < 1e-9);
+        CHECK(distance3(phi.evaluate(q.first[0], q.first[1]), psi.evaluate(q.second[0], q.second[1])) < 1e-9);
+      }
+    }
+  CHECK(sheets == 2);
+  // completeness against 2 x 2001 samples of the closed form, in 3D and in both parameter domains
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  for (int k = 0; k <= 2000; ++k)
+    for (int sign : {-1, 1}) {
+      const double x = -1 + 2.0 * k / 2000, z = sign * std::sqrt(std::max(0.0, 1 - x * x));
+      samples.push_back({std::array<double, 3>{(x + 1) / 2, (z + 1) / 2, 0}, std::array<double, 3>{x, x * x, z},
+                         std::array<double, 3>{(z + 1) / 2, (x + 1) / 2, 0}});
+    }
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < 5e-3);
+  CHECK(gap[1] < 5e-3);
+  CHECK(gap[2] < 5e-3);
+}
+
+TEST_CASE("orthogonal extrusions with one branch; one sphere under two parametrizations is refused with the reason",
+          "[surface][structured][minors]") {
+  // Phi = (x, x^2, z), Psi = (x, s', 1/2 - (2s' - 1)^2) with x = 2t - 1, s' = s: the curve x = 2u - 1, y = x^2,
+  // z = 1/2 - (2y - 1)^2, one branch over the whole diagonal u = t, genuine throughout (v = (z + 1)/2 in [0, 1]).
+  const Patch phi = from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
+  const Patch psi = from_power({"2*v-1", "u", "1/2-(2*u-1)^2"}, 2, 1);
+  CHECK(intersection_equation(phi, psi).is_degenerate());
+  const Surface_locus L = intersection_locus(phi, psi);
+  REQUIRE(L.topology_computed);
+  CHECK(L.equation.route == Implicit_equation::Route::maximal_minors);
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  for (int k = 0; k <= 2000; ++k) {
+    const double x = -1 + 2.0 * k / 2000, y = x * x, z = 0.5 - (2 * y - 1) * (2 * y - 1);
+    samples.push_back({std::array<double, 3>{(x + 1) / 2, (z + 1) / 2, 0}, std::array<double, 3>{x, y, z},
+                       std::array<double, 3>{y, (x + 1) / 2, 0}});
+  }
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < 0.03);  // (24 chords per arc by default)
+  CHECK(gap[1] < 0.03);
+  CHECK(gap[2] < 0.03);
+  // the stereographic cap and the octant of one sphere: a solution at every (u, t), an overlap the minors cannot
+  // see past; refused with the reason, never answered with a curve
+  const Patch cap = bezoutian_test::rational_patch_from_power({"2*u", "2*v", "1-u^2-v^2", "1+u^2+v^2"}, 2, 2);
+  const Patch octant = bezoutian_test::rational_patch_from_power(
+      {"(1-v^2)*(1-u^2)", "2*u*(1-v^2)", "2*v*(1+u^2)", "(1+u^2)*(1+v^2)"}, 2, 2);
+  try {
+    intersection_locus(cap, octant);
+    FAIL("expected Invalid_input");
+  } catch (const Invalid_input& e) {
+    CHECK(std::string(e.what()).find("solution at every (u, t)") != std::string::npos);
+  }
+}

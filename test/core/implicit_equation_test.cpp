@@ -6,8 +6,10 @@
 #include "test_support.h"
 
 #include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/elimination/Maximal_minor_projection.h>
 #include <bezoutian/topology/matrix_zero_points.h>
 #include <bezoutian/io/Geometry_document.h>
+#include "power_patch.h"
 
 #include <random>
 #include <set>
@@ -172,4 +174,66 @@ TEST_CASE("a rational (2,2) patch with two triple points of D: the topology of C
     got.insert(s);
   }
   CHECK(got == expected);
+}
+
+namespace {
+// A 2 x 2 Bezoutian_matrix with the given entries (polynomials in u (inner) and t (outer)).
+Bezoutian_matrix matrix_of(const std::vector<std::vector<Polynomial_2<Rational>>>& entries) {
+  Bezoutian_matrix B;
+  B.entries = entries;
+  return B;
+}
+Polynomial_2<Rational> U() { return Polynomial_2<Rational>(Polynomial_1<Rational>(Rational(0), Rational(1))); }
+Polynomial_2<Rational> T() { return Polynomial_2<Rational>(Polynomial_1<Rational>(Rational(0)), Polynomial_1<Rational>(Rational(1))); }
+Polynomial_2<Rational> C(int c) { return Polynomial_2<Rational>(Rational(c)); }
+}  // namespace
+
+TEST_CASE("generic rank: proved on a grid, including a matrix whose rank drops at the first sample point",
+          "[implicit][minors]") {
+  // second row = t * first row: rank 1 over Q(u, t), by construction
+  CHECK(generic_rank(matrix_of({{U(), T()}, {U() * T(), T() * T()}})).rank == 1);
+  CHECK(generic_rank(matrix_of({{U(), T()}, {T(), U()}})).rank == 2);
+  // det = (u - 7/19) (t - 11/23) vanishes at the first sample point (7/19, 11/23): the grid must find rank 2
+  const Polynomial_2<Rational> a = U() - Polynomial_2<Rational>(Rational(7, 19)), b = T() - Polynomial_2<Rational>(Rational(11, 23));
+  CHECK(generic_rank(matrix_of({{a, C(0)}, {C(0), b}})).rank == 2);
+  CHECK(generic_rank(matrix_of({{C(0), C(0)}, {C(0), C(0)}})).rank == 0);
+  CHECK(internal::rational_rank({{Rational(1), Rational(2)}, {Rational(2), Rational(4)}}) == 1);
+}
+
+TEST_CASE("maximal minors: the curve of two orthogonal extrusions, where det B vanishes identically",
+          "[implicit][minors]") {
+  // (x, x^2, z) with x = 2u - 1, z = 2v - 1, and (x, 1 - z^2, z) with x = 2t - 1, z = 2s - 1: they meet over the
+  // line u = t only (equal x), and det B = 0 (a common root at infinity for every (u, t))
+  const Patch phi = bezoutian_test::patch_from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
+  const Patch psi = bezoutian_test::patch_from_power({"2*v-1", "1-(2*u-1)^2", "2*u-1"}, 2, 1);
+  const Implicit_equation e = intersection_equation(phi, psi);
+  REQUIRE(e.is_degenerate());
+  const Maximal_minor_projection mm = maximal_minor_projection(e.matrix, phi, psi);
+  INFO(mm.reason);
+  REQUIRE(mm.computed);
+  CHECK(mm.rank.rank == 1);
+  CHECK(mm.rank.grid_points > 0);
+  // D = +-(u - t) up to a constant: zero exactly on the diagonal
+  const Polynomial_2<Integer> D = normalized_square_free_part(mm.polynomial);
+  REQUIRE(D.degree() == 1);
+  auto at = [&](const Rational& x, const Rational& y) {
+    Rational r(0);
+    for (int j = D.degree(); j >= 0; --j) {
+      Rational c(0);
+      for (int i = D[j].degree(); i >= 0; --i) c = c * x + Rational(D[j][i]);
+      r = r * y + c;
+    }
+    return r;
+  };
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; j <= 4; ++j) CHECK(CGAL::is_zero(at(Rational(i, 4), Rational(j, 4))) == (i == j));
+  // the stereographic cap and the octant of one sphere have a partner at every (u, t): refused
+  const Patch cap = bezoutian_test::rational_patch_from_power({"2*u", "2*v", "1-u^2-v^2", "1+u^2+v^2"}, 2, 2);
+  const Patch octant = bezoutian_test::rational_patch_from_power(
+      {"(1-v^2)*(1-u^2)", "2*u*(1-v^2)", "2*v*(1+u^2)", "(1+u^2)*(1+v^2)"}, 2, 2);
+  const Implicit_equation f = intersection_equation(cap, octant);
+  REQUIRE(f.is_degenerate());
+  const Maximal_minor_projection no = maximal_minor_projection(f.matrix, cap, octant);
+  CHECK_FALSE(no.computed);
+  CHECK(no.reason.find("solution at every (u, t)") != std::string::npos);
 }

@@ -26,6 +26,12 @@ struct Implicit_equation {
   /// The square-free part of `determinant`, normalized the same way: the curve D = 0 without multiplicities.
   Polynomial_2<Integer> square_free;
   std::array<std::string, 2> variables;
+  /// Where D comes from: det B (possibly after mixing the coordinates), or, where det B vanishes identically, the
+  /// gcd of maximal minors of B (elimination/Maximal_minor_projection.h), whose kernel is then never a single line.
+  enum class Route { determinant, maximal_minors };
+  Route route = Route::determinant;
+  /// The rank of B over Q(p0, p1), proved (Route::maximal_minors); the matrix size otherwise.
+  std::size_t generic_rank = 0;
 
   /// True if det B vanishes identically: the locus is not a curve in the (p0,p1) plane (e.g. identical or
   /// overlapping patches, or an input that is not "sufficiently generic" in the sense of Theorems 2-5).
@@ -83,6 +89,7 @@ inline Polynomial_2<Integer> integer_multiple(const Polynomial_2<Rational>& q) {
 inline Implicit_equation finish_implicit_equation(Bezoutian_matrix&& B) {
   Implicit_equation e;
   e.variables = B.variables;
+  e.generic_rank = B.size();
   e.matrix = std::move(B);
   e.determinant = normalized_primitive_part(integer_multiple(polynomial_matrix_determinant(e.matrix.entries)));
   e.square_free = CGAL::is_zero(e.determinant) ? e.determinant : normalized_square_free_part(e.determinant);

@@ -32,6 +32,7 @@
 #include <bezoutian/lifting/partner_sheets.h>
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/elimination/Implicit_equation.h>
+#include <bezoutian/elimination/Maximal_minor_projection.h>
 #include <bezoutian/geometry/Rational_bezier_patch.h>
 
 #include <array>
@@ -339,7 +340,9 @@ inline bool topology_is_affordable(Surface_locus& L, const Surface_intersection_
   for (int j = 0; j <= D.degree(); ++j)
     if (!CGAL::is_zero(D[j])) total = std::max(total, j + D[j].degree());
   Subdivision_topology_options so = o.subdivision;
-  if (so.multiple_points.empty()) so.multiple_points = matrix_zero_points(L.equation, o.box);
+  // (common zeros of the entries are points of multiplicity >= N of det B, not of a gcd of minors)
+  if (so.multiple_points.empty() && L.equation.route == Implicit_equation::Route::determinant)
+    so.multiple_points = matrix_zero_points(L.equation, o.box);
   const Subdivision_topology_result sub = subdivide_curve_in_box(D, o.box, so);
   if (sub.certified) {
     L.topology = sub.topology;
@@ -687,7 +690,10 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   if (self_patch)
     for (int chart = 0; chart < 2; ++chart) blown_up.emplace_back(*self_patch, chart);
   // the kernel of B: phantom proofs where the partner is far outside the domain (kernel_partner_proofs.h)
+  // (not where B has a kernel of dimension >= 2 everywhere: D then comes from maximal minors, and a kernel vector
+  // need not belong to the partner of the point)
   const Kernel_partner_system kernel(L.equation.matrix, L.self_intersection);
+  const bool kernel_usable = L.equation.route == Implicit_equation::Route::determinant;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
@@ -714,7 +720,8 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     }
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
-                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up, &kernel);
+                              float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up,
+                              kernel_usable ? &kernel : nullptr);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided && !split[i]) {
@@ -1178,8 +1185,15 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       if (cp.related) return internal::common_parent_locus(o, cp, std::move(L.contacts));
       why = cp.reason;
     }
-    throw Invalid_input("intersection: det B vanishes identically and " + why +
-                        " (the patches are not generic in the sense of Theorems 2-3)");
+    // a common root at every (u, t), at infinity or with a zero weight: D from the maximal minors of B
+    const Maximal_minor_projection mm = maximal_minor_projection(L.equation.matrix, phi, psi);
+    if (!mm.computed)
+      throw Invalid_input("intersection: det B vanishes identically, " + why + ", and no projection operator from "
+                          "maximal minors applies: " + mm.reason);
+    L.equation.determinant = mm.polynomial;
+    L.equation.square_free = normalized_square_free_part(mm.polynomial);
+    L.equation.route = Implicit_equation::Route::maximal_minors;
+    L.equation.generic_rank = mm.rank.rank;
   }
   const bool traced = internal::topology_is_affordable(
       L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)),
@@ -1193,7 +1207,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     if (guess) {
       vs = *guess;
       q.lifted = true;
-    } else {
+    } else if (L.equation.route == Implicit_equation::Route::determinant) {
       // U = [s^i v^j] with the monomial 1 present: s = U(1,0)/U(0,0), v = U(0,1)/U(0,0)
       long double s = 0, v = 0;
       const auto x = internal::null_vector(internal::transpose(B_double(u, t)));

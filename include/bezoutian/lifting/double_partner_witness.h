@@ -448,7 +448,7 @@ inline std::vector<std::complex<double>> complex_roots(std::vector<std::complex<
 }
 
 /// Floating-point partners y of the point x (E(x; y) ~ 0, nonzero weights), real and complex: the roots y1 of
-/// the Sylvester resultant of E_1, E_2 in y2 (interpolated from values on a circle), y2 the common root, each
+/// the Sylvester resultant in y2 of two fixed combinations of E_1, E_2, E_3 (interpolated from values on a circle), y2 the common root, each
 /// polished by Gauss-Newton on the three equations; distinct up to 1e-7, without the trivial partner (0, 0) of
 /// self-intersection.
 inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const Partner_equations& eq,
@@ -471,6 +471,15 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
       for (int k = 0; k <= d; ++k) c[j] += v[k] * std::polar(1.0, -2 * M_PI * j * k / (d + 1));
       c[j] /= double(d + 1);
     }
+    return c;
+  };
+  // F_a = E_a + c_a E_3 (a = 1, 2): every common root of E is one of F_1, F_2, and their resultant does not vanish
+  // identically when one coordinate equation does on the locus (E_1 = 2(u - t) for two extrusions along x)
+  auto combined = [&](C y1, int which) {
+    std::vector<C> c = coefficients(y1, which);
+    const std::vector<C> e = coefficients(y1, 2);
+    const double weight = which == 0 ? 0.6180339887498949 : -0.4142135623730950;
+    for (std::size_t j = 0; j < c.size(); ++j) c[j] += weight * e[j];
     return c;
   };
   auto sylvester_det = [&](const std::vector<C>& f, const std::vector<C>& g) {
@@ -507,7 +516,7 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
     std::vector<C> vals(N), co(N, 0);
     for (int k = 0; k < N; ++k) {
       const C y1 = std::polar(rho, 2 * M_PI * k / N);
-      vals[k] = sylvester_det(coefficients(y1, 0), coefficients(y1, 1));
+      vals[k] = sylvester_det(combined(y1, 0), combined(y1, 1));
     }
     for (int j = 0; j < N; ++j) {
       for (int k = 0; k < N; ++k) co[j] += vals[k] * std::polar(1.0, -2 * M_PI * j * k / N);
