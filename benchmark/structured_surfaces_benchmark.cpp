@@ -1,4 +1,5 @@
-// Structured surfaces with closed-form intersections: height fields, cylinders, orthogonal extrusions, spheres cut and touched by planes,
+// Structured surfaces with closed-form intersections: height fields, cylinders, orthogonal extrusions, a torus
+// and its bitangent plane, Viviani's sphere and cylinder, spheres cut and touched by planes,
 // spheres touching, a cone and a plane tangent along curves, pieces of one surface (halves, overlaps, adjacent
 // octants). For each pair: our certified intersection (answered, certified, complete against dense samples of the
 // closed-form answer, time) and, side by side in the same run when built with OpenCASCADE, GeomAPI_IntSS on the
@@ -155,6 +156,42 @@ std::vector<Family> families() {
       const double x = -1 + 2.0 * i / 400, z = std::sqrt(std::max(0.0, 1 - x * x));
       f.samples.push_back({x, x * x, z});
       f.samples.push_back({x, x * x, -z});
+    }
+    out.push_back(f);
+  }
+  {
+    Family f{"orthogonal extrusions, det B = 0", "y = x^2 along z meets the curve (s, 1/2 - (2s - 1)^2) along x",
+             power_patch("2*u - 1", "(2*u - 1)^2", "2*v - 1", "1", 2, 1),
+             power_patch("2*v - 1", "u", "1/2 - (2*u - 1)^2", "1", 2, 1), {}};
+    for (int i = 0; i <= 400; ++i) {
+      const double x = -1 + 2.0 * i / 400, y = x * x;
+      f.samples.push_back({x, y, 0.5 - (2 * y - 1) * (2 * y - 1)});
+    }
+    out.push_back(f);
+  }
+  {
+    // torus R = 5, r = 3 (tube angle 2 atan((2u - 1)/2), around the axis 2 atan(v)) and its bitangent plane z = 3x/4
+    const std::string a = "((2*u - 1)/2)", rho = "(5*(1 + " + a + "^2) + 3*(1 - " + a + "^2))";
+    Family f{"torus and a bitangent plane", "an arc of the Villarceau circle of radius 5 about (0, 3, 0)",
+             power_patch(rho + "*(1 - v^2)", rho + "*2*v", "6*" + a + "*(1 + v^2)", "(1 + " + a + "^2)*(1 + v^2)", 2, 2),
+             power_patch("8*u", "8*v", "6*u", "1", 1, 1), {}};
+    f.samples = circle({0, 3, 0}, {0.8, 0, 0.6}, {0, 1, 0}, 5, std::acos(0.8), pi / 2);
+    out.push_back(f);
+  }
+  {
+    // sphere |p| = 1 (longitude and latitude 2 atan((2u - 1)/2), 2 atan((2v - 1)/2)) and the cylinder
+    // (x - 1/2)^2 + y^2 = 1/4 (angle psi = 2 atan((2u - 1)/2), z = 2v - 1): x = cos^2(psi/2),
+    // y = sin(psi/2) cos(psi/2), z = +-sin(psi/2), two branches crossing at the tangency (1, 0, 0)
+    const std::string a = "((2*u - 1)/2)", b = "((2*v - 1)/2)";
+    Family f{"Viviani: sphere and cylinder", "two branches crossing at the tangent point (1, 0, 0)",
+             power_patch("(1 - " + a + "^2)*(1 - " + b + "^2)", "2*" + a + "*(1 - " + b + "^2)",
+                         "2*" + b + "*(1 + " + a + "^2)", "(1 + " + a + "^2)*(1 + " + b + "^2)", 2, 2),
+             power_patch("1", a, "(2*v - 1)*(1 + " + a + "^2)", "1 + " + a + "^2", 2, 1), {}};
+    const double psi_max = 2 * std::atan(0.5);
+    for (int i = 0; i <= 400; ++i) {
+      const double h = (-psi_max + 2 * psi_max * i / 400) / 2, c = std::cos(h), sn = std::sin(h);
+      f.samples.push_back({c * c, sn * c, sn});
+      f.samples.push_back({c * c, sn * c, -sn});
     }
     out.push_back(f);
   }

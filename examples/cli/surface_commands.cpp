@@ -173,7 +173,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
   // sides of the box on D = 0 (collapsed edges, shared boundary curves): not part of the components above
   json edges = json::array();
   static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain",
-                                 "partner_iso_curve", "collapsed_point_off_partner"};
+                                 "partner_iso_curve", "collapsed_point_off_partner", "curve_off_partner"};
   for (const auto& e : L.edge_lines) {
     json pts = json::array(), partner = json::array(), p3 = json::array();
     for (const auto& q : e.points) {
@@ -663,7 +663,7 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   else
     so.partner_domain = parse_box(domain, "--domain");
   so.tolerance = o.tolerance;
-  if (!(o.polyline_tolerance >= 0)) throw bezoutian::Invalid_input("--polyline-tolerance must be >= 0 (0: off)");
+  if (!(o.polyline_tolerance >= 0)) throw bezoutian::Invalid_input("--polyline-tolerance must be >= 0 (0: uniform samples only)");
   so.polyline_tolerance = o.polyline_tolerance;
   so.max_total_degree_for_topology = o.max_degree;
   so.whole_plane_topology = bezoutian::Cgal_curve_analysis{};

@@ -202,10 +202,10 @@ TEST_CASE("generic rank: proved on a grid, including a matrix whose rank drops a
 
 TEST_CASE("maximal minors: the curve of two orthogonal extrusions, where det B vanishes identically",
           "[implicit][minors]") {
-  // (x, x^2, z) with x = 2u - 1, z = 2v - 1, and (x, 1 - z^2, z) with x = 2t - 1, z = 2s - 1: they meet over the
-  // line u = t only (equal x), and det B = 0 (a common root at infinity for every (u, t))
+  // (x, x^2, z) with x = 2u - 1, z = 2v - 1, and (x, s, 1/2 - (2s - 1)^2) with x = 2t - 1: they meet over the line
+  // u = t only (equal x), and det B = 0 (a common root at infinity for every (u, t))
   const Patch phi = bezoutian_test::patch_from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
-  const Patch psi = bezoutian_test::patch_from_power({"2*v-1", "1-(2*u-1)^2", "2*u-1"}, 2, 1);
+  const Patch psi = bezoutian_test::patch_from_power({"2*v-1", "u", "1/2-(2*u-1)^2"}, 2, 1);
   const Implicit_equation e = intersection_equation(phi, psi);
   REQUIRE(e.is_degenerate());
   const Maximal_minor_projection mm = maximal_minor_projection(e.matrix, phi, psi);

@@ -80,9 +80,10 @@ struct Surface_intersection_options {
   bool complete_lifting = true;
   /// Adaptive refinement of the arcs that carry sheets (lifting/arc_refinement.h): a span is halved while the
   /// lifted curve strays from its chord by more than this at the span's midpoint, in 3D or in either parameter
-  /// domain (a floating-point midpoint test, not a proved bound), and where a sheet begins or ends inside it. The
-  /// refinement is off by default (0): next to seams, where a partner runs along the domain's boundary, it can add
-  /// points whose status is not proved; 1e-3 is fine enough to draw a patch of unit size.
+  /// domain (a floating-point midpoint test, not a proved bound), and where a sheet begins or ends inside it; the
+  /// arcs of two patches over one projection and the genuine box sides on D = 0 (edge lines) are refined by the
+  /// same test. Off by default (0: the uniform samples): next to seams, where a partner runs along the domain's
+  /// boundary, refined points can be left without a proved status; 1e-3 is fine enough to draw patches of unit size.
   double polyline_tolerance = 0;
   /// At most this many points added by the refinement per locus.
   std::size_t max_refinement_points = 20000;
@@ -507,6 +508,47 @@ inline bool interior_line_is_genuine(bool vertical, const Rational& c, const Sur
   return is_genuine_cause(explain(e, o, phi, psi).cause);
 }
 
+// Samples of a curve f -> point(f), f in [f0, f1]: n + 1 uniform ones, then every span halved while the point at
+// its midpoint is farther than `tolerance` from the chord, in 3D or in either parameter domain (the midpoint test of
+// adaptive sampling, a floating-point estimate, not a bound), with at most `max_points` points added; tolerance 0:
+// the uniform samples.
+template <class Point_at>
+std::vector<Locus_point> adaptive_samples(double f0, double f1, int n, double tolerance, std::size_t max_points,
+                                          Point_at point_at) {
+  std::vector<std::pair<double, Locus_point>> s;
+  for (int i = 0; i <= n; ++i) {
+    const double f = f0 + (f1 - f0) * double(i) / n;
+    s.emplace_back(f, point_at(f));
+  }
+  auto misses = [&](const Locus_point& a, const Locus_point& b, const Locus_point& m) {
+    double d3 = 0, dp = 0, dq = 0;
+    for (int c = 0; c < 3; ++c) d3 += std::pow(m.point_3d[c] - 0.5 * (a.point_3d[c] + b.point_3d[c]), 2);
+    for (int c = 0; c < 2; ++c) {
+      dp += std::pow(m.first[c] - 0.5 * (a.first[c] + b.first[c]), 2);
+      dq += std::pow(m.second[c] - 0.5 * (a.second[c] + b.second[c]), 2);
+    }
+    return !(std::sqrt(std::max({d3, dp, dq})) <= tolerance);
+  };
+  std::size_t added = 0;
+  for (std::size_t i = 0; tolerance > 0 && i + 1 < s.size() && added < max_points;) {
+    const double f = 0.5 * (s[i].first + s[i + 1].first);
+    if (f <= s[i].first || f >= s[i + 1].first) {  // no double between them
+      ++i;
+      continue;
+    }
+    Locus_point m = point_at(f);
+    if (misses(s[i].second, s[i + 1].second, m)) {
+      s.insert(s.begin() + std::ptrdiff_t(i + 1), {f, std::move(m)});
+      ++added;
+    } else {
+      ++i;
+    }
+  }
+  std::vector<Locus_point> out;
+  for (auto& x : s) out.push_back(std::move(x.second));
+  return out;
+}
+
 // The box's sides on D = 0 (found by topology_is_affordable): their cause (intersection/internal/box_edge_lines.h) and sample
 // points. For a proved cause the pair of each sample is taken from it: the partner's iso-curve M gives one point
 // exactly, the nearest point of the side's own iso-curve C the other (for a collapsed C, its far end).
@@ -547,6 +589,10 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
         e.description = "the " + line + " lies on D = 0: its iso-curve is one point, off the " +
                         (vertical ? "second" : "first") + " patch (proved): phantom";
         break;
+      case Edge_line_explanation::curve_off_partner:
+        e.description = "the " + line + " lies on D = 0: its iso-curve meets the " + (vertical ? "second" : "first") +
+                        " patch nowhere (proved): phantom";
+        break;
       case Edge_line_explanation::outside_domain:
         e.description = "the " + line + " lies on D = 0, outside the partner domain: phantom";
         break;
@@ -556,16 +602,17 @@ void describe_edge_lines(Surface_locus& L, const Surface_intersection_options& o
     const int n = std::max(1, o.samples_per_arc);
     const double c = CGAL::to_double(e.value);
     const double f0 = CGAL::to_double(vertical ? b.v0 : b.u0), f1 = CGAL::to_double(vertical ? b.v1 : b.u1);
+    if (e.genuine) {  // the side's image and its partner curve, to the polyline tolerance
+      e.points = adaptive_samples(f0, f1, n, o.polyline_tolerance, o.max_refinement_points, [&](double f) {
+        return edge_line_point(x, e.side, o, phi, psi, vertical ? c : f, vertical ? f : c);
+      });
+      continue;
+    }
     for (int i = 0; i <= n; ++i) {
       const double tau = double(i) / n, f = f0 + tau * (f1 - f0);
-      const double u = vertical ? c : f, v = vertical ? f : c;
-      if (!e.genuine) {
-        Locus_point q = lift_point(u, v, nullptr);
-        if (e.status_proved) q.genuine = false, q.status_proved = true;  // outside the domain: phantom, proved
-        e.points.push_back(q);
-        continue;
-      }
-      e.points.push_back(edge_line_point(x, e.side, o, phi, psi, u, v));
+      Locus_point q = lift_point(vertical ? c : f, vertical ? f : c, nullptr);
+      if (e.status_proved) q.genuine = false, q.status_proved = true;  // outside the domain: phantom, proved
+      e.points.push_back(q);
     }
   }
 }
@@ -979,6 +1026,31 @@ inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rationa
   describe_edge_lines(L, o, phi, &psi, lift_point);
   if (!traced) return L;
   lift_arcs(L, lift_point);
+  if (o.polyline_tolerance > 0) {  // chords to the tolerance; each new point of h = 0 is genuine like the others
+    const Double_curve_equation D_double(L.equation.square_free);
+    std::size_t inserted = 0;
+    for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+      Locus_arc& arc = L.arcs[k];
+      Curve_topology_edge& e = L.topology.edges[k];
+      if (arc.points.size() != e.polyline.size()) continue;
+      auto fibre = [](const std::array<double, 2>& x) { return std::vector<std::array<double, 2>>{{x[1], x[0]}}; };
+      std::vector<std::vector<std::array<double, 2>>> fibres;
+      for (const auto& x : e.polyline) fibres.push_back(fibre(x));
+      Arc_refinement_model model;
+      model.fibre = fibre;
+      model.lift = [&](const std::array<double, 2>& x, const std::array<double, 2>&) {
+        const Locus_point q = lift_point(x[0], x[1], nullptr);
+        return std::array<double, 7>{q.first[0], q.first[1], q.second[0], q.second[1],
+                                     q.point_3d[0], q.point_3d[1], q.point_3d[2]};
+      };
+      model.insert = [&](std::size_t i, const std::array<double, 2>& x, const std::vector<std::array<double, 2>>&) {
+        arc.points.insert(arc.points.begin() + std::ptrdiff_t(i + 1), lift_point(x[0], x[1], nullptr));
+      };
+      model.solve = [](int, double, std::array<double, 3>&) { return false; };  // the root of h on the line
+      model.inside = [](const std::array<double, 2>&, const std::array<double, 2>&) { return true; };
+      inserted += refine_arc(e, fibres, D_double, model, o.polyline_tolerance, o.max_refinement_points - inserted);
+    }
+  }
   // one sheet per arc, all partners: Phi(u, v) = Psi(s, t) gives pi Psi(u, v) = pi Psi(s, t), so (s, t) = (u, v)
   for (Locus_arc& arc : L.arcs) {
     arc.undecided_fraction = 0;

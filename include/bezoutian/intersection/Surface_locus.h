@@ -104,9 +104,11 @@ struct Locus_split_point {
 /// that point, is a double point) or a boundary curve shared with a side of the partner domain (two glued patches,
 /// the seam of a closed patch), or an iso-curve of the partner inside its domain (a patch tangent to the other
 /// along its boundary), all genuine at every point; or the side's fixed coordinate lies outside the partner domain,
-/// or the side's iso-curve is one point that is not on the partner (phantom at every point).
+/// or the side's iso-curve is one point that is not on the partner, or a curve that meets the partner nowhere (phantom
+/// at every point).
 struct Locus_edge_line {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner,
+               curve_off_partner };
   int side = 0;    ///< of the box, in boundary_curve order: 0: v = v0, 1: u = u1, 2: v = v1, 3: u = u0 ((u, t) for two patches)
   Rational value;  ///< the fixed coordinate of the side
   /// A line u = value (side 3) or v / t = value (side 0) inside the box rather than a side: removed from D only when

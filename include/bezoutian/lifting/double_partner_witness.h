@@ -448,7 +448,7 @@ inline std::vector<std::complex<double>> complex_roots(std::vector<std::complex<
 }
 
 /// Floating-point partners y of the point x (E(x; y) ~ 0, nonzero weights), real and complex: the roots y1 of
-/// the Sylvester resultant in y2 of two fixed combinations of E_1, E_2, E_3 (interpolated from values on a circle), y2 the common root, each
+/// the Sylvester resultants in y2 of E_1, E_2 and of two fixed combinations of E_1, E_2, E_3 (interpolated from values on a circle), y2 the common root, each
 /// polished by Gauss-Newton on the three equations; distinct up to 1e-7, without the trivial partner (0, 0) of
 /// self-intersection.
 inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const Partner_equations& eq,
@@ -473,10 +473,13 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
     }
     return c;
   };
-  // F_a = E_a + c_a E_3 (a = 1, 2): every common root of E is one of F_1, F_2, and their resultant does not vanish
-  // identically when one coordinate equation does on the locus (E_1 = 2(u - t) for two extrusions along x)
+  // Pairing 0: F_a = E_a (a = 1, 2); pairing 1: F_a = E_a + c_a E_3. Every common root of E is one of F_1, F_2
+  // either way; the second resultant does not vanish when E_1 does on the whole locus (E_1 = 2(u - t) for two
+  // extrusions along x), and the union of both proposals is polished on all three equations.
+  int pairing = 0;
   auto combined = [&](C y1, int which) {
     std::vector<C> c = coefficients(y1, which);
+    if (pairing == 0) return c;
     const std::vector<C> e = coefficients(y1, 2);
     const double weight = which == 0 ? 0.6180339887498949 : -0.4142135623730950;
     for (std::size_t j = 0; j < c.size(); ++j) c[j] += weight * e[j];
@@ -512,6 +515,7 @@ inline std::vector<std::array<std::complex<double>, 2>> numerical_partners(const
   const int N = 2 * d1 * d + 1;
   std::vector<C> res_coeff;
   std::vector<std::array<C, 2>> out;
+  for (pairing = 0; pairing < 2; ++pairing)
   for (double rho : {1.0, 2.0}) {
     std::vector<C> vals(N), co(N, 0);
     for (int k = 0; k < N; ++k) {

@@ -5,6 +5,7 @@
 
 #include <bezoutian/algebraic/bivariate_real_solutions.h>
 #include <bezoutian/intersection/Curve_intersection.h>
+#include <bezoutian/intersection/Curve_surface_intersection.h>
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/algebraic/Polynomial_normalization.h>
@@ -176,9 +177,12 @@ inline bool lies_on(const Edge_curve& M, const Edge_curve& C) {
 /// the simplest rational, and the exact test lies_on decides). For two patches a side whose C is one point P not
 /// on the partner over its range is phantom at every point (`point_off_partner`: P is off the partner, proved by
 /// the exact real solutions of X_k - P_k W = 0; D vanishes there through the base points of the collapsed side,
-/// complex zeros of its weight).
+/// complex zeros of its weight). A side whose C, over the partner domain, meets the partner over its range nowhere
+/// is phantom at every point too (`curve_off_partner`, by the exact curve/patch intersection: D vanishes there
+/// through pairs outside the domains, e.g. a pole of a sphere patch and the point at infinity of a circle).
 struct Edge_line_explanation {
-  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner };
+  enum Cause { unexplained, collapsed, shared_curve, outside_domain, partner_iso_curve, point_off_partner,
+               curve_off_partner };
   Cause cause = unexplained;
   int partner_side = -1;  ///< the side of the partner domain holding M (boundary_curve order), -1: C itself or inside
   Rational partner_value;  ///< c', the fixed coordinate of M (the side's own value when C is paired with itself)
@@ -254,6 +258,15 @@ inline Edge_line_explanation explain_edge_line(int side, const Parameter_box& bo
       const Bivariate_real_solutions on = bivariate_real_solutions(F, Rational(0), Rational(1), Rational(0), Rational(1));
       if (on.decided && on.points.empty()) {
         e.cause = Edge_line_explanation::point_off_partner;
+        return e;
+      }
+    }
+    if (psi && !own_point && other.has_positive_weights()) {
+      // C meets the partner over its range nowhere (exact curve/patch intersection): no point of the side has a
+      // partner in the domain
+      const Curve_patch_intersection_result r = intersect_curve_patch(e.own, other);
+      if (r.points.empty() && r.overlaps.empty()) {
+        e.cause = Edge_line_explanation::curve_off_partner;
         return e;
       }
     }
