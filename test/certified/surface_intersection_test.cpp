@@ -1948,6 +1948,9 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   REQUIRE(L.topology_computed);
   // D = u - t: every point of the line, and nothing else
   CHECK(L.equation.square_free.degree() == 1);
+  // every partner proved found but next to x = +-1 (the sheets meet) and x = 0 (partners at the domain's corners):
+  // the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined pairing
+  for (const auto& a : L.arcs) CHECK(a.fibre_undecided_fraction < 0.1);
   std::size_t sheets = 0;
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets) {
@@ -2017,4 +2020,32 @@ TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal m
   } catch (const Invalid_input& e) {
     CHECK(std::string(e.what()).find("solution at every (u, t)") != std::string::npos);
   }
+}
+
+TEST_CASE("Viviani: a sphere and a cylinder; the cylinder's sides on D = 0 are proved phantom", "[surface][structured][edge]") {
+  // sphere |p| = 1 (longitude, latitude 2 atan((2u - 1)/2), 2 atan((2v - 1)/2): |z| <= 4/5) and the cylinder
+  // (x - 1/2)^2 + y^2 = 1/4, z = 2t - 1. D vanishes on t = 0 and t = 1: each side's circle (z = -1, z = 1) passes
+  // through a pole of the sphere at the circle's parameter infinity, and the poles' latitude parameter lies outside
+  // [0, 1]. The circles (|z| = 1) meet the sphere patch (|z| <= 4/5) nowhere: every point of both sides is phantom.
+  const std::string a = "((2*u-1)/2)", b = "((2*v-1)/2)";
+  const Patch sphere = bezoutian_test::rational_patch_from_power(
+      {"(1-" + a + "^2)*(1-" + b + "^2)", "2*" + a + "*(1-" + b + "^2)", "2*" + b + "*(1+" + a + "^2)",
+       "(1+" + a + "^2)*(1+" + b + "^2)"}, 2, 2);
+  const Patch cylinder = bezoutian_test::rational_patch_from_power({"1", a, "(2*v-1)*(1+" + a + "^2)", "1+" + a + "^2"}, 2, 1);
+  const Surface_locus L = intersection_locus(sphere, cylinder);
+  REQUIRE(L.edge_lines.size() == 2);
+  for (const auto& e : L.edge_lines) {
+    CHECK((e.side == 0 || e.side == 2));  // t = 0 and t = 1
+    CHECK(e.cause == Locus_edge_line::curve_off_partner);
+    CHECK_FALSE(e.genuine);
+    CHECK(e.status_proved);
+  }
+  // every genuine traced point lies on both closed forms
+  for (const auto& arc : L.arcs)
+    for (const auto& q : arc.points)
+      if (q.genuine) {
+        const auto& p = q.point_3d;
+        CHECK(std::fabs(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - 1) < 1e-9);
+        CHECK(std::fabs((p[0] - 0.5) * (p[0] - 0.5) + p[1] * p[1] - 0.25) < 1e-9);
+      }
 }

@@ -37,7 +37,9 @@
 #include <bezoutian/algebraic/Polynomial_normalization.h>
 #include <bezoutian/algebraic/bivariate_real_solutions.h>
 #include <bezoutian/arithmetic/Error.h>
+#include <bezoutian/elimination/Implicit_equation.h>
 #include <bezoutian/elimination/Polynomial_matrix_determinant.h>
+#include <bezoutian/elimination/exact_linear_algebra.h>
 #include <bezoutian/elimination/Surface_bezoutian_matrices.h>
 #include <bezoutian/geometry/Rational_bezier_patch.h>
 
@@ -69,25 +71,6 @@ struct Maximal_minor_projection {
 };
 
 namespace internal {
-
-// Exact rank of a rational matrix (Gaussian elimination).
-inline std::size_t rational_rank(std::vector<std::vector<Rational>> A) {
-  const std::size_t n = A.size(), m = n ? A[0].size() : 0;
-  std::size_t rank = 0;
-  for (std::size_t c = 0; c < m && rank < n; ++c) {
-    std::size_t p = rank;
-    while (p < n && CGAL::is_zero(A[p][c])) ++p;
-    if (p == n) continue;
-    std::swap(A[p], A[rank]);
-    for (std::size_t r = rank + 1; r < n; ++r) {
-      if (CGAL::is_zero(A[r][c])) continue;
-      const Rational f = A[r][c] / A[rank][c];
-      for (std::size_t k = c; k < m; ++k) A[r][k] -= f * A[rank][k];
-    }
-    ++rank;
-  }
-  return rank;
-}
 
 inline std::vector<std::vector<Rational>> evaluate_matrix_exact(const Bezoutian_matrix& B, const Rational& x0,
                                                                 const Rational& x1) {
@@ -123,22 +106,6 @@ inline std::vector<std::vector<Polynomial_2<Rational>>> compressed_matrix(const 
     for (std::size_t c = 0; c < r; ++c)
       for (std::size_t i = 0; i < N; ++i) M[a][c] += Polynomial_2<Rational>(Rational(P[a][i])) * BQ[i][c];
   return M;
-}
-
-inline Polynomial_2<Integer> integer_primitive(const Polynomial_2<Rational>& q) {
-  Integer L(1);
-  for (int j = 0; j <= q.degree(); ++j)
-    for (int i = 0; i <= q[j].degree(); ++i) {
-      const Integer d = q[j][i].denominator();
-      L = L / CGAL::gcd(L, d) * d;
-    }
-  std::vector<Polynomial_1<Integer>> outer;
-  for (int j = 0; j <= q.degree(); ++j) {
-    std::vector<Integer> c;
-    for (int i = 0; i <= q[j].degree(); ++i) c.push_back(q[j][i].numerator() * (L / q[j][i].denominator()));
-    outer.emplace_back(c.begin(), c.end());
-  }
-  return normalized_primitive_part(Polynomial_2<Integer>(outer.begin(), outer.end()));
 }
 
 // E_k(v, s) = Phi_k(u0, v) W_Psi(s, t0) - Psi_k(s, t0) W_Phi(u0, v) (inner variable v, outer s), k = 1, 2, 3.
@@ -190,7 +157,6 @@ inline bool fibre_proved_empty(const std::array<Polynomial_2<Rational>, 3>& E, c
 /// (Error beyond it).
 inline Generic_rank generic_rank(const Bezoutian_matrix& B, std::size_t max_grid_points = 40000) {
   using internal::evaluate_matrix_exact;
-  using internal::rational_rank;
   int d0 = 0, d1 = 0;
   for (const auto& row : B.entries)
     for (const auto& e : row) {
@@ -199,7 +165,7 @@ inline Generic_rank generic_rank(const Bezoutian_matrix& B, std::size_t max_grid
       for (int j = 0; j <= e.degree(); ++j) d0 = std::max(d0, e[j].degree());
     }
   Generic_rank g;
-  g.rank = rational_rank(evaluate_matrix_exact(B, Rational(7, 19), Rational(11, 23)));
+  g.rank = internal::fraction_free_rank(evaluate_matrix_exact(B, Rational(7, 19), Rational(11, 23)));
   for (bool grown = true; grown;) {
     grown = false;
     if (g.rank == B.size()) return g;
@@ -210,7 +176,7 @@ inline Generic_rank generic_rank(const Bezoutian_matrix& B, std::size_t max_grid
     g.grid_points = (a + 1) * (b + 1);
     for (std::size_t i = 0; i <= a && !grown; ++i)
       for (std::size_t j = 0; j <= b && !grown; ++j) {
-        const std::size_t r = rational_rank(evaluate_matrix_exact(B, Rational(int(i)), Rational(int(j))));
+        const std::size_t r = internal::fraction_free_rank(evaluate_matrix_exact(B, Rational(int(i)), Rational(int(j))));
         if (r > g.rank) {
           g.rank = r;
           grown = true;
@@ -253,7 +219,7 @@ inline Maximal_minor_projection maximal_minor_projection(const Bezoutian_matrix&
     const Polynomial_2<Rational> d = polynomial_matrix_determinant(internal::compressed_matrix(B, out.rank.rank, seed));
     ++out.compressions;
     if (CGAL::is_zero(d)) continue;
-    const Polynomial_2<Integer> D = internal::integer_primitive(d);
+    const Polynomial_2<Integer> D = normalized_primitive_part(internal::integer_multiple(d));
     if (CGAL::is_zero(G)) {
       G = D;
       continue;
