@@ -23,6 +23,7 @@
 #include <CGAL/Polynomial_traits_d.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -81,6 +82,126 @@ struct Curve_intersection_result {
   std::vector<Curve_overlap> overlaps;
 };
 
+/// \brief Resource limits of an intersection computation (curve/curve, curve/patch).
+///
+/// The size limits are checked before any computation, in the order max_control_points, max_degree,
+/// max_degree_product, max_coefficient_bits; an input beyond one of them is refused with Limit_exceeded (stage
+/// "input", limit() the name of the member). The defaults are far above the curves of CAD data (degrees <= 25,
+/// coordinates of a few dozen digits) and keep every answer within seconds to about a minute on one core
+/// (doc/hostile_input.md, "Hostile inputs and limits"). The time budget is checked between the stages of the
+/// computation and ends it with Budget_exceeded (stage() the stage that had just run). A negative size limit (0 for
+/// max_coefficient_bits and time_limit) means no limit; Intersection_limits::none() has no limit at all.
+struct Intersection_limits {
+  /// Largest degree of a curve, and of a patch in u and in v (default 64). A pair of random curves of degree 32
+  /// takes ~7 s; a curve of degree 64 against a line ~4 s.
+  int max_degree = 64;
+  /// Largest number of control points of one object: n + 1 for a curve, (m + 1)(n + 1) for a patch (default 4225,
+  /// a patch of bi-degree (64, 64)). Checked first: a curve with 100,000 control points is refused at once.
+  long max_control_points = 4225;
+  /// Largest product of the degrees (default 1024): deg C1 deg C2 for two curves (the Bezout number, the degree of
+  /// the eliminants R(s), T(t)); 2 m n deg C for a curve and a patch of bi-degree (m, n) (the degree of R(r)).
+  long max_degree_product = 1024;
+  /// Largest size in bits of the numerator or denominator of a homogeneous control point coordinate (weight,
+  /// w x, w y, ...) (default 4096, the readers' io::max_number_bits). 0: no limit.
+  long max_coefficient_bits = 4096;
+  /// Wall-clock budget in seconds (default 0: none), checked between the stages (interval solver, exact default
+  /// path, elimination, root isolation, pairing, shear, overlaps): one stage may overrun it; the size limits bound
+  /// how long a stage can run (within the default size limits, at most ~8 s on the inputs measured).
+  double time_limit = 0;
+
+  /// No limit at all.
+  static Intersection_limits none() {
+    Intersection_limits l;
+    l.max_degree = -1;
+    l.max_control_points = -1;
+    l.max_degree_product = -1;
+    l.max_coefficient_bits = 0;
+    l.time_limit = 0;
+    return l;
+  }
+};
+
+/// Options of intersect_curves and self_intersections: the elimination method and the resource limits.
+struct Curve_intersection_options {
+  Curve_intersection_method method = Curve_intersection_method::default_method;
+  Intersection_limits limits;
+};
+
+namespace internal {
+
+/// Largest bit size of a numerator or denominator of a rational.
+inline long rational_bits(const Rational& q) {
+  const long a = CGAL::is_zero(q) ? 0 : long(mpz_sizeinbase(mpq_numref(q.mpq()), 2));
+  const long b = long(mpz_sizeinbase(mpq_denref(q.mpq()), 2));
+  return std::max(a, b);
+}
+
+/// Checks max_control_points and max_degree for one object given by its control point count and degrees; `what`
+/// names it in the message ("curve 1").
+inline void check_size_limits(const char* function, const std::string& what, const std::vector<int>& degrees,
+                              long control_points, const Intersection_limits& l) {
+  if (l.max_control_points >= 0 && control_points > l.max_control_points)
+    throw Limit_exceeded(function, "input", "max_control_points",
+                         what + " has " + std::to_string(control_points) + " control points, more than max_control_points = " +
+                             std::to_string(l.max_control_points));
+  for (int d : degrees)
+    if (l.max_degree >= 0 && d > l.max_degree)
+      throw Limit_exceeded(function, "input", "max_degree",
+                           what + " has degree " + std::to_string(d) + ", more than max_degree = " +
+                               std::to_string(l.max_degree));
+}
+
+inline void check_coefficient_bits(const char* function, const std::string& what, long bits, const Intersection_limits& l) {
+  if (l.max_coefficient_bits > 0 && bits > l.max_coefficient_bits)
+    throw Limit_exceeded(function, "input", "max_coefficient_bits",
+                         what + " has a coordinate of " + std::to_string(bits) +
+                             " bits (numerator or denominator of a homogeneous coordinate), more than max_coefficient_bits = " +
+                             std::to_string(l.max_coefficient_bits));
+}
+
+inline void check_degree_product(const char* function, long product, const std::string& how,
+                                 const Intersection_limits& l) {
+  if (l.max_degree_product >= 0 && product > l.max_degree_product)
+    throw Limit_exceeded(function, "input", "max_degree_product",
+                         "the product of the degrees " + how + " = " + std::to_string(product) +
+                             " is more than max_degree_product = " + std::to_string(l.max_degree_product));
+}
+
+/// The size limits for a curve (control points, degree, coefficient bits); the degree product is checked by the caller.
+template <int D>
+void check_curve_limits(const char* function, const std::string& what, const Rational_bezier_curve<Rational, D>& c,
+                        const Intersection_limits& l) {
+  check_size_limits(function, what, {c.degree()}, long(c.number_of_control_points()), l);
+  if (l.max_coefficient_bits <= 0) return;
+  long bits = 0;
+  for (const auto& h : c.homogeneous_control_points())
+    for (const Rational& x : h) bits = std::max(bits, rational_bits(x));
+  check_coefficient_bits(function, what, bits, l);
+}
+
+/// Wall-clock budget of one computation, checked between its stages.
+class Time_budget {
+ public:
+  Time_budget() = default;
+  Time_budget(const char* function, double seconds)
+      : function_(function), seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  /// Throws Budget_exceeded naming `stage` (the stage that has just run) when the budget is exhausted.
+  void check(const char* stage) const {
+    if (!(seconds_ > 0)) return;
+    const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (used > seconds_)
+      throw Budget_exceeded(function_, stage,
+                            std::to_string(used) + " s elapsed, more than time_limit = " + std::to_string(seconds_) + " s");
+  }
+
+ private:
+  const char* function_ = "";
+  double seconds_ = 0;
+  std::chrono::steady_clock::time_point start_;
+};
+
+} // namespace internal
+
 namespace internal {
 
 /// The engine of intersect_curves and self_intersections (du-1989 ch. 4). run() dispatches to one path per case:
@@ -110,6 +231,9 @@ class Curve_intersection_engine {
         for (int i = 0; i <= f.degree(); ++i) coefficient_bits_ = std::max(coefficient_bits_, long(f[i].bit_size()));
   }
 
+  /// The wall-clock budget checked between the stages of run() and run_self() (Budget_exceeded).
+  void set_time_budget(const Time_budget& b) { budget_ = b; }
+
   Curve_intersection_result run() {
     check_no_pole(c1_);
     check_no_pole(c2_);
@@ -119,16 +243,19 @@ class Curve_intersection_engine {
       constant_case(k1, k2, res);
       return res;
     }
+    budget_.check("power forms");
     if (method_ == Curve_intersection_method::default_method && planar_lazy_ && (lazy_path(res) || space_path(res))) {
       sort_points(res);
       return res;
     }
+    budget_.check("interval solver");
     res = Curve_intersection_result();
     if (disjoint_hulls()) return res;
     if (method_ == Curve_intersection_method::default_method && fast_path(res)) {
       sort_points(res);
       return res;
     }
+    budget_.check("exact default path");
     res = Curve_intersection_result();
     std::vector<P2> F;
     for (int k = 1; k <= D; ++k) F.push_back(cross_term(H1_[k], H2_[0], H2_[k], H1_[0]));
@@ -345,6 +472,7 @@ class Curve_intersection_engine {
       if (ok) break;
     }
     BEZOUTIAN_PROFILE_STEP("eliminate");
+    budget_.check("elimination");
     if (!ok) {
       if (!allow_overlap) throw Error("intersect_curves: the reduced system still has a common component");
       overlap_case(F, res);
@@ -374,6 +502,7 @@ class Curve_intersection_engine {
       rt = roots01(primitive(T));
     }
     BEZOUTIAN_PROFILE_STEP("isolate");
+    budget_.check("root isolation");
     const bool same_lists = plain && es.size() == 1;
     std::vector<int> ps = pair_all(es, lt, rs, rt, same_lists);
     // The t direction is needed only for s-roots left unresolved (otherwise every pair was found from s).
@@ -386,6 +515,7 @@ class Curve_intersection_engine {
       pt = pair_all(et, ls, rt, rs, same_lists);
     }
     BEZOUTIAN_PROFILE_STEP("pair");
+    budget_.check("pairing");
     std::vector<std::pair<int, int>> pairs;
     for (std::size_t i = 0; i < ps.size(); ++i)
       if (ps[i] >= 0) pairs.push_back({int(i), ps[i]});
@@ -401,7 +531,10 @@ class Curve_intersection_engine {
     // Neither elimination describes such a point (S11 vanishes on both lines), so its tangency and multiplicity come
     // from the sheared system too, where the point is alone on its line u = u_k.
     std::vector<Sheared_pair> sheared;
-    if (!us.empty() && !ut.empty()) sheared = sheared_pairs(F, rs, rt, us, ut);
+    if (!us.empty() && !ut.empty()) {
+      sheared = sheared_pairs(F, rs, rt, us, ut);
+      budget_.check("shear");
+    }
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     for (const auto& p : pairs) res.points.push_back(make_point(rs[p.first], rt[p.second], es[0], et[0], ps[p.first] >= 0));
@@ -477,6 +610,7 @@ class Curve_intersection_engine {
       }
       return false;
     };
+    budget_.check("overlaps");
     // Isolated touching points at breakpoints.
     for (const Break& b : ub)
       for (const auto& t : b.partners)
@@ -522,6 +656,7 @@ class Curve_intersection_engine {
   bool planar_lazy_ = true;
   Form H1_, H2_;
   long coefficient_bits_ = 0;
+  Time_budget budget_;
 };
 
 } // namespace internal
@@ -546,28 +681,68 @@ namespace bezoutian {
 /// resultant means a common component: overlaps are then found from the preimages of the curve ends.
 /// Plane curves, default method: a certified interval solver runs first; when it proves every intersection
 /// (transversal crossings strictly inside (0,1)^2) the parameters are returned lazily (exact on demand).
+///
+/// Resource limits (`options.limits`, Intersection_limits): curves beyond a size limit are refused before any
+/// computation, and the time budget is checked between the stages; both end with Limit_exceeded (Budget_exceeded for
+/// the time) naming the stage and the limit. The lazy parameters of the result are made exact outside the budget.
+template <int D>
+Curve_intersection_result intersect_curves(const Rational_bezier_curve<Rational, D>& c1,
+                                           const Rational_bezier_curve<Rational, D>& c2,
+                                           const Curve_intersection_options& options) {
+  static const char* const function = "intersect_curves";
+  const internal::Time_budget budget(function, options.limits.time_limit);
+  internal::check_curve_limits(function, "curve 1", c1, options.limits);
+  internal::check_curve_limits(function, "curve 2", c2, options.limits);
+  internal::check_degree_product(function, long(c1.degree()) * c2.degree(),
+                                 std::to_string(c1.degree()) + " x " + std::to_string(c2.degree()), options.limits);
+  internal::Curve_intersection_engine<D> engine(c1, c2, options.method);
+  engine.set_time_budget(budget);
+  return engine.run();
+}
+
+/// \brief intersect_curves with the given method and the default limits (Intersection_limits).
 template <int D>
 Curve_intersection_result intersect_curves(const Rational_bezier_curve<Rational, D>& c1,
                                            const Rational_bezier_curve<Rational, D>& c2,
                                            Curve_intersection_method method = Curve_intersection_method::default_method) {
-  return internal::Curve_intersection_engine<D>(c1, c2, method).run();
+  Curve_intersection_options options;
+  options.method = method;
+  return intersect_curves(c1, c2, options);
 }
 
 /// \brief Self-intersections (loops) of a curve: pairs s < t in [0,1] with C(s) = C(t), exact (the system
-/// (X_k(s)W(t) - X_k(t)W(s)) / (s - t) = 0, divided differences, solved like intersect_curves).
+/// (X_k(s)W(t) - X_k(t)W(s)) / (s - t) = 0, divided differences, solved like intersect_curves). The limits as in
+/// intersect_curves, the degree product being deg C x deg C.
+template <int D>
+Curve_intersection_result self_intersections(const Rational_bezier_curve<Rational, D>& c,
+                                             const Curve_intersection_options& options) {
+  static const char* const function = "self_intersections";
+  const internal::Time_budget budget(function, options.limits.time_limit);
+  internal::check_curve_limits(function, "the curve", c, options.limits);
+  internal::check_degree_product(function, long(c.degree()) * c.degree(),
+                                 std::to_string(c.degree()) + " x " + std::to_string(c.degree()), options.limits);
+  internal::Curve_intersection_engine<D> engine(c, c, options.method);
+  engine.set_time_budget(budget);
+  return engine.run_self();
+}
+
+/// \brief self_intersections with the given method and the default limits (Intersection_limits).
 template <int D>
 Curve_intersection_result self_intersections(const Rational_bezier_curve<Rational, D>& c,
                                              Curve_intersection_method method = Curve_intersection_method::default_method) {
-  return internal::Curve_intersection_engine<D>(c, c, method).run_self();
+  Curve_intersection_options options;
+  options.method = method;
+  return self_intersections(c, options);
 }
 
 /// Functor form (CGAL style).
 struct Intersect_curves {
   Curve_intersection_method method = Curve_intersection_method::default_method;
+  Intersection_limits limits;  ///< resource limits (defaults: Intersection_limits)
   template <int D>
   Curve_intersection_result operator()(const Rational_bezier_curve<Rational, D>& c1,
                                        const Rational_bezier_curve<Rational, D>& c2) const {
-    return intersect_curves(c1, c2, method);
+    return intersect_curves(c1, c2, Curve_intersection_options{method, limits});
   }
 };
 

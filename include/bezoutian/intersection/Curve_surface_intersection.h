@@ -106,6 +106,9 @@ class Curve_patch_engine {
 
   Curve_patch_engine(const Curve& c, const Patch& p) : curve_(c), patch_(p) {}
 
+  /// The wall-clock budget checked between the stages of run() (Budget_exceeded).
+  void set_time_budget(const Time_budget& b) { budget_ = b; }
+
   Curve_patch_intersection_result run() {
     if (patch_.degree_u() < 1 || patch_.degree_v() < 1)
       throw Invalid_input("intersect_curve_patch: the patch has degree 0 in u or in v (it is a curve, not a surface)");
@@ -124,12 +127,14 @@ class Curve_patch_engine {
       return res;
     }
     BEZOUTIAN_PROFILE_STEP("matrix");
+    budget_.check("implicit matrix");
     M_ = matrix_->at_curve(H_);
     // R(r) = det M(C(r)): the implicit equation of the surface along the curve (buse-elkadi-galligo-2008 §2:
     // the determinant of the Bezoutian matrix is the resultant). Degree <= 2 m n deg C.
     const Z1 R = small_polynomial_determinant(M_);
     R_ = R;
     BEZOUTIAN_PROFILE_STEP("det");
+    budget_.check("determinant");
     if (CGAL::is_zero(R)) {
       if (implicit_matrix_regular())
         on_surface_case(res);
@@ -138,7 +143,11 @@ class Curve_patch_engine {
     } else {
       const auto roots = separated_roots(R, Rational(0), Rational(1));
       BEZOUTIAN_PROFILE_STEP("isolate");
-      for (const Isolated_root& root : roots) resolve(root, res);
+      budget_.check("root isolation");
+      for (const Isolated_root& root : roots) {
+        resolve(root, res);
+        budget_.check("preimages");
+      }
       BEZOUTIAN_PROFILE_STEP("resolve");
     }
     sort_points(res);
@@ -364,6 +373,7 @@ class Curve_patch_engine {
   Z1 U_, V_;
   std::array<std::vector<Isolated_root>, 2> eliminant_roots_;
   std::array<Z1, 2> removed_lines_{Z1(1), Z1(1)};
+  Time_budget budget_;
 };
 
 }  // namespace cs
@@ -396,9 +406,39 @@ namespace bezoutian {
 /// at irrational parameters), when the curve runs along a patch with base points (or a constant curve meets one),
 /// or when no projection gives nonzero eliminants U, V. A constant curve gives the overlap [0,1] if its point is on
 /// the patch, nothing otherwise.
+///
+/// Resource limits (Intersection_limits): the curve's degree and control points, the patch's degrees in u and in v
+/// and its (m + 1)(n + 1) control points, the degree product 2 m n deg C (the degree of R(r)) and the coefficient bits
+/// are checked before any computation, the time budget between the stages (implicit matrix, determinant, root
+/// isolation, preimages); Limit_exceeded (Budget_exceeded) names the stage and the limit.
+inline Curve_patch_intersection_result intersect_curve_patch(const Rational_bezier_curve<Rational, 3>& curve,
+                                                              const Rational_bezier_patch<Rational>& patch,
+                                                              const Intersection_limits& limits) {
+  static const char* const function = "intersect_curve_patch";
+  const internal::Time_budget budget(function, limits.time_limit);
+  internal::check_curve_limits(function, "the curve", curve, limits);
+  internal::check_size_limits(function, "the patch", {patch.degree_u(), patch.degree_v()},
+                              long(patch.degree_u() + 1) * long(patch.degree_v() + 1), limits);
+  if (limits.max_coefficient_bits > 0) {
+    long bits = 0;
+    for (const auto& row : patch.homogeneous_net())
+      for (const auto& h : row)
+        for (const Rational& x : h) bits = std::max(bits, internal::rational_bits(x));
+    internal::check_coefficient_bits(function, "the patch", bits, limits);
+  }
+  internal::check_degree_product(function, 2L * patch.degree_u() * patch.degree_v() * curve.degree(),
+                                 "2 m n deg C = 2 x " + std::to_string(patch.degree_u()) + " x " +
+                                     std::to_string(patch.degree_v()) + " x " + std::to_string(curve.degree()),
+                                 limits);
+  internal::cs::Curve_patch_engine engine(curve, patch);
+  engine.set_time_budget(budget);
+  return engine.run();
+}
+
+/// \brief intersect_curve_patch with the default limits (Intersection_limits).
 inline Curve_patch_intersection_result intersect_curve_patch(const Rational_bezier_curve<Rational, 3>& curve,
                                                               const Rational_bezier_patch<Rational>& patch) {
-  return internal::cs::Curve_patch_engine(curve, patch).run();
+  return intersect_curve_patch(curve, patch, Intersection_limits());
 }
 
 /// \brief Intersections of the segment a + r (b - a), r in [0,1], with the patch (du-1989 Problem 2.2a): the
@@ -411,9 +451,10 @@ inline Curve_patch_intersection_result intersect_segment_patch(const std::array<
 
 /// Function object form (CGAL style).
 struct Intersect_curve_patch {
+  Intersection_limits limits;  ///< resource limits (defaults: Intersection_limits)
   Curve_patch_intersection_result operator()(const Rational_bezier_curve<Rational, 3>& curve,
                                              const Rational_bezier_patch<Rational>& patch) const {
-    return intersect_curve_patch(curve, patch);
+    return intersect_curve_patch(curve, patch, limits);
   }
 };
 
