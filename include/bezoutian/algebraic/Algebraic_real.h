@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,15 @@ namespace bezoutian {
 
 namespace internal {
 struct Algebraic_real_access;
+
+/// A copy of p with a CGAL handle of its own. CGAL::Polynomial (CGAL 5.5: Handle_with_policy) counts references
+/// with a plain integer, so one handle copied or destroyed by several threads is a data race; the coefficients
+/// (CGAL::Gmpz: Handle_for) count atomically when CGAL_HAS_THREADS is defined (CGAL/config.h defines it when Boost
+/// detects threads).
+template <class NT>
+Polynomial_1<NT> unshared_copy(const Polynomial_1<NT>& p) {
+  return Polynomial_1<NT>(p.begin(), p.end());
+}
 
 /// The square-free factors (canonical, pairwise coprime) of a nonzero integer polynomial, with shared coefficient
 /// vectors: the exact data that lazily known numbers materialize from (one per eliminant, shared by its roots).
@@ -108,6 +118,10 @@ inline int derivative_sign_on(const Mpz_vector& c, const Rational& lo, const Rat
 class Lazy_real_source {
  public:
   virtual ~Lazy_real_source() {}
+  /// Held by Algebraic_real around every call of eliminant() and contract(): the numbers of one source may be used
+  /// from several threads, and these calls update the source's shared state. Taken after the numbers' own mutexes,
+  /// never before them, so an implementation must not call members of the numbers it serves.
+  std::mutex mutex;
   /// A nonzero polynomial (square-free factors) of which number `index` is a root; computed once and shared.
   virtual const Lazy_eliminant& eliminant(int index) = 0;
   /// Shrinks the closed enclosure [lo, hi] of number `index` (it keeps containing the number) towards width <= w;
@@ -129,8 +143,9 @@ class Lazy_real_source {
 ///
 /// Copies share their representation (like CGAL handles): refining one copy
 /// refines all. Refinement happens inside const member functions (the
-/// number does not change, only its representation); objects are therefore
-/// not safe to use concurrently from several threads.
+/// number does not change, only its representation), under a mutex of the
+/// representation: every const member may be called from several threads at
+/// once, on one object or on copies (doc/algebraic_numbers.md, "Threads").
 ///
 /// Exact on demand: a number may also be *lazy*, known first only by a closed
 /// rational enclosure [lo, hi] proved to contain it and a shared source
@@ -170,51 +185,66 @@ class Algebraic_real {
 
   /// True iff the number is rational (exact predicate, see the class comment).
   bool is_rational() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     return rep_->exact;
   }
   /// True while the number is known only by its enclosure (see the class comment).
-  bool is_lazy() const { return bool(rep_->src); }
+  bool is_lazy() const {
+    Lock lock(rep_->mutex);
+    return bool(rep_->src);
+  }
   /// A closed interval [first, second] containing the number, without materializing: the enclosure of a lazy
   /// number, otherwise the isolating interval (open, irrational numbers) or the value twice (rationals).
-  std::pair<Rational, Rational> enclosure() const { return {rep_->lo, rep_->hi}; }
+  std::pair<Rational, Rational> enclosure() const {
+    Lock lock(rep_->mutex);
+    return {rep_->lo, rep_->hi};
+  }
   /// Makes a lazy number exact (no effect otherwise).
   void materialize() const {
-    if (rep_->src) rep_->materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
   }
   /// The value, if is_rational(); throws Invalid_input otherwise.
   Rational rational_value() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     if (!rep_->exact) throw Invalid_input("Algebraic_real::rational_value(): the number is irrational");
     return rep_->lo;
   }
 
   /// Defining polynomial: square-free, primitive, positive leading
   /// coefficient; q x - p for the rational p/q. It may be replaced by a
-  /// divisor when comparisons discover a common factor.
-  const Polynomial_1<Integer>& polynomial() const {
-    materialize();
-    return rep_->poly;
+  /// divisor when comparisons discover a common factor. Returned as a copy
+  /// of its own (CGAL::Polynomial's reference count is not atomic).
+  Polynomial_1<Integer> polynomial() const {
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
+    return internal::unshared_copy(rep_->poly);
   }
   /// Ends of the isolating interval (both equal to the value for rationals). Materializes a lazy number
   /// (enclosure() gives the enclosure without doing so).
   Rational lower() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     return rep_->lo;
   }
   Rational upper() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     return rep_->hi;
   }
   /// Sign of polynomial() at lower() (0 for rationals).
   int sign_at_lower() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     return rep_->exact ? 0 : rep_->sign_lo;
   }
 
   /// Halves the isolating interval (one bisection, exact sign at the midpoint).
   void refine() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     if (!rep_->exact) rep_->bisect();
   }
 
@@ -223,31 +253,21 @@ class Algebraic_real {
   /// its ends (quadratic convergence), with bisection as the fallback.
   void refine_to_width(const Rational& w) const {
     if (!(w > Rational(0))) throw Invalid_input("Algebraic_real::refine_to_width: width must be positive");
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     rep_->refine_to_width(w);
   }
 
   /// Double interval containing the number, at most a few ulps wide (refines).
   std::pair<double, double> to_interval() const {
-    Rep& r = *rep_;
-    if (r.src) {  // lazy: contract the enclosure to relative width 2^-55 (0 outside it), else materialize
-      if (r.lazy_narrow_relative(55)) return {CGAL::to_interval(r.lo).first, CGAL::to_interval(r.hi).second};
-      materialize();
-    }
-    r.separate_from_zero();
-    if (!r.exact) {
-      Rational m = CGAL::abs(r.lo) < CGAL::abs(r.hi) ? CGAL::abs(r.lo) : CGAL::abs(r.hi);
-      Rational w;  // fresh object: CGAL::Gmpq copies share their mpq_t
-      mpq_div_2exp(w.mpq(), m.mpq(), 55);
-      r.refine_to_width(w);
-    }
-    if (r.exact) return CGAL::to_interval(r.lo);
-    return {CGAL::to_interval(r.lo).first, CGAL::to_interval(r.hi).second};
+    Lock lock(rep_->mutex);
+    return rep_->to_interval();
   }
   /// The double nearest to the number (up to one ulp in the rare case it is
   /// extremely close to the midpoint between two doubles).
   double to_double() const {
-    to_interval();  // refines to relative width 2^-55
+    Lock lock(rep_->mutex);
+    rep_->to_interval();  // refines to relative width 2^-55
     internal::Mpfr x(53);
     const Rational mid = rep_->exact ? rep_->lo : (rep_->lo + rep_->hi) / 2;  // (lazy: the enclosure's)
     mpfr_set_q(x.get(), mid.mpq(), MPFR_RNDN);
@@ -261,6 +281,7 @@ class Algebraic_real {
   /// -5 <= E < significant_digits, otherwise "d.ddde<E>"; trailing zeros are kept.
   std::string to_decimal_string(int significant_digits) const {
     if (significant_digits < 1) throw Invalid_input("to_decimal_string: need at least one digit");
+    Lock lock(rep_->mutex);
     Rep& r = *rep_;
     for (int extra = 4; r.src && extra <= 68; extra += 16) {  // lazy: contracted enclosure, both ends rounded
       if (!r.lazy_narrow_relative(static_cast<unsigned long>(extra + 4 * significant_digits))) break;
@@ -269,7 +290,7 @@ class Algebraic_real {
       auto b = internal::round_to_significant(r.hi, significant_digits);
       if (a == b) return internal::format_significant(neg, a.first, a.second);
     }
-    materialize();
+    r.materialize_if_lazy();
     r.separate_from_zero();
     for (int extra = 4;; extra += 16) {
       if (r.exact) return internal::rational_to_decimal_string(r.lo, significant_digits);
@@ -297,86 +318,14 @@ class Algebraic_real {
   /// after which both numbers share the smaller defining polynomial.
   int compare(const Algebraic_real& other) const {
     if (rep_ == other.rep_) return 0;
-    if (rep_->src || other.rep_->src) {
-      const int c = compare_enclosures(*rep_, *other.rep_);
-      if (c != 2) return c;
-      materialize();
-      other.materialize();
-    }
-    Rep& a = *rep_;
-    Rep& b = *other.rep_;
-    bool gcd_done = false;
-    unsigned long extra_bits = 16;
-    for (int round = 0;; ++round) {
-      if (a.exact) return -other.compare(a.lo);
-      if (b.exact) return compare(b.lo);
-      if (a.hi <= b.lo) return -1;
-      if (b.hi <= a.lo) return 1;
-      // Shrink both to the common part of the intervals.
-      if (b.lo > a.lo) {
-        const int s = a.locate(b.lo);  // sign of alpha - b.lo
-        if (s < 0) return -1;
-        if (s == 0) continue;
-      }
-      if (b.hi < a.hi) {
-        const int s = a.locate(b.hi);
-        if (s > 0) return 1;
-        if (s == 0) continue;
-      }
-      if (a.lo > b.lo) {
-        const int s = b.locate(a.lo);
-        if (s < 0) return 1;
-        if (s == 0) continue;
-      }
-      if (a.hi < b.hi) {
-        const int s = b.locate(a.hi);
-        if (s > 0) return -1;
-        if (s == 0) continue;
-      }
-      // Now both isolating intervals are the same I = (lo, hi).
-      if (a.c == b.c || a.poly == b.poly) return 0;  // I holds only one root of that polynomial
-      if (!gcd_done && round >= 6) {
-        gcd_done = true;
-        auto hc = std::make_shared<const internal::Mpz_vector>(internal::gcd_of(*a.c, *b.c));
-        if (hc->size() >= 2) {
-          // h divides both defining polynomials, so it has at most one root in
-          // I, which is then both numbers; equality iff h changes sign on I.
-          const Polynomial_1<Integer> h = internal::polynomial_of(*hc);
-          const int sl = internal::sign_at(*hc, a.lo), sh = internal::sign_at(*hc, a.hi);
-          if (sl != 0 && sh != 0 && sl != sh) {
-            a.set_interval(h, hc, a.lo, a.hi, sl);
-            b.set_interval(h, hc, a.lo, a.hi, sl);
-            return 0;
-          }
-        }
-      }
-      if (!gcd_done) {  // bisect the common interval
-        const Rational m = (a.lo + a.hi) / 2;
-        a.locate(m);
-        if (!a.exact) b.locate(m);
-      } else {  // known to differ: quadratic refinement, doubling the bits gained
-        const Rational w = shrunk_width(a.hi - a.lo, extra_bits);
-        extra_bits = std::min<unsigned long>(2 * extra_bits, 1UL << 20);
-        a.refine_to_width(w);
-        b.refine_to_width(w);
-      }
-    }
+    std::scoped_lock lock(rep_->mutex, other.rep_->mutex);  // std::lock's order: no deadlock with b.compare(a)
+    return compare(*rep_, *other.rep_);
   }
 
   /// Exact comparison with a rational (refines the interval against q).
   int compare(const Rational& q) const {
-    Rep& r = *rep_;
-    if (r.src) {
-      Rep p;
-      p.set_exact(q);
-      const int c = compare_enclosures(r, p);
-      if (c != 2) return c;
-      materialize();
-    }
-    if (r.exact) return CGAL::compare(r.lo, q);
-    if (q <= r.lo) return 1;
-    if (q >= r.hi) return -1;
-    return r.locate(q);
+    Lock lock(rep_->mutex);
+    return compare(*rep_, q);
   }
 
   /// Sign of the number.
@@ -391,8 +340,9 @@ class Algebraic_real {
     const Polynomial_1<Integer> F = internal::integer_multiple(f);  // positive multiple
     if (CGAL::is_zero(F)) return 0;
     const internal::Mpz_vector fc = internal::coefficients_of(F);
-    materialize();
+    Lock lock(rep_->mutex);
     Rep& r = *rep_;
+    r.materialize_if_lazy();
     if (F.degree() == 0 || r.exact) return internal::sign_at(fc, r.lo);
     bool gcd_done = false;
     unsigned long extra_bits = 8;
@@ -462,7 +412,8 @@ class Algebraic_real {
 
   /// -x: the root of P(-x) in (-hi, -lo).
   Algebraic_real negated() const {
-    materialize();
+    Lock lock(rep_->mutex);
+    rep_->materialize_if_lazy();
     const Rep& r = *rep_;
     if (r.exact) return Algebraic_real(Rational(-r.lo));
     auto c = std::make_shared<internal::Mpz_vector>(*r.c);
@@ -477,9 +428,14 @@ class Algebraic_real {
 
  private:
   friend struct internal::Algebraic_real_access;
+  using Lock = std::lock_guard<std::mutex>;
 
+  // The representation shared by copies. Every member function of Algebraic_real holds `mutex` while it reads or
+  // refines it; Rep's own functions expect the caller to hold it. `poly` never shares its CGAL handle with another
+  // object (internal::unshared_copy): CGAL::Polynomial's reference count is a plain integer.
   struct Rep {
-    Polynomial_1<Integer> poly;  // canonical square-free defining polynomial
+    std::mutex mutex;
+    Polynomial_1<Integer> poly{Integer(0)};  // canonical square-free defining polynomial (not CGAL's per-thread 0)
     std::shared_ptr<const internal::Mpz_vector> c;  // its coefficients (shared by roots of one polynomial)
     Rational lo, hi;             // lo == hi == value when exact
     int sign_lo = 0;             // sign of poly at lo (nonzero unless exact)
@@ -488,11 +444,20 @@ class Algebraic_real {
     std::shared_ptr<internal::Lazy_real_source> src;
     int src_index = 0;
 
+    void materialize_if_lazy() {
+      if (src) materialize();
+    }
+
     // Contracts a lazy enclosure to width <= w through the source; false if it could not.
     bool lazy_contract(const Rational& w) {
       if (hi - lo <= w) return true;
       Rational l = lo, h = hi;
-      if (!src->contract(src_index, l, h, w)) return false;
+      bool done;
+      {
+        std::lock_guard<std::mutex> lock(src->mutex);
+        done = src->contract(src_index, l, h, w);
+      }
+      if (!done) return false;
       if (l > lo) lo = l;  // (the source keeps the number inside)
       if (h < hi) hi = h;
       return hi - lo <= w;
@@ -518,7 +483,10 @@ class Algebraic_real {
     // number), then the isolating interval comes from Descartes' rule on the factor holding it.
     void materialize() {
       std::shared_ptr<internal::Lazy_real_source> s = src;
-      const internal::Lazy_eliminant& E = s->eliminant(src_index);
+      const internal::Lazy_eliminant& E = [&]() -> const internal::Lazy_eliminant& {
+        std::lock_guard<std::mutex> lock(s->mutex);
+        return s->eliminant(src_index);
+      }();
       unsigned long bits = 16;
       for (int round = 0;; ++round) {
         if (lo == hi) {  // a point enclosure is the number itself
@@ -605,7 +573,7 @@ class Algebraic_real {
     }
     void set_interval(const Polynomial_1<Integer>& p, std::shared_ptr<const internal::Mpz_vector> pc, const Rational& l,
                       const Rational& h, int s_lo) {
-      poly = p;
+      poly = internal::unshared_copy(p);
       c = std::move(pc);
       lo = l;
       hi = h;
@@ -623,6 +591,22 @@ class Algebraic_real {
       return -1;
     }
     void bisect() { locate((lo + hi) / 2); }
+    // Algebraic_real::to_interval().
+    std::pair<double, double> to_interval() {
+      if (src) {  // lazy: contract the enclosure to relative width 2^-55 (0 outside it), else materialize
+        if (lazy_narrow_relative(55)) return {CGAL::to_interval(lo).first, CGAL::to_interval(hi).second};
+        materialize();
+      }
+      separate_from_zero();
+      if (!exact) {
+        Rational m = CGAL::abs(lo) < CGAL::abs(hi) ? CGAL::abs(lo) : CGAL::abs(hi);
+        Rational w;  // fresh object: CGAL::Gmpq copies share their mpq_t
+        mpq_div_2exp(w.mpq(), m.mpq(), 55);
+        refine_to_width(w);
+      }
+      if (exact) return CGAL::to_interval(lo);
+      return {CGAL::to_interval(lo).first, CGAL::to_interval(hi).second};
+    }
     // Makes 0 lie outside [lo, hi] (the number is nonzero unless exact).
     void separate_from_zero() {
       if (!exact && lo < Rational(0) && hi > Rational(0)) locate(Rational(0));
@@ -733,6 +717,86 @@ class Algebraic_real {
     rep_->resolve_rationality();
   }
 
+  // compare(other) and compare(q) with the mutexes of the representations held by the caller.
+  static int compare(Rep& a, Rep& b) {
+    if (a.src || b.src) {
+      const int c = compare_enclosures(a, b);
+      if (c != 2) return c;
+      a.materialize_if_lazy();
+      b.materialize_if_lazy();
+    }
+    bool gcd_done = false;
+    unsigned long extra_bits = 16;
+    for (int round = 0;; ++round) {
+      if (a.exact) return -compare(b, a.lo);
+      if (b.exact) return compare(a, b.lo);
+      if (a.hi <= b.lo) return -1;
+      if (b.hi <= a.lo) return 1;
+      // Shrink both to the common part of the intervals.
+      if (b.lo > a.lo) {
+        const int s = a.locate(b.lo);  // sign of alpha - b.lo
+        if (s < 0) return -1;
+        if (s == 0) continue;
+      }
+      if (b.hi < a.hi) {
+        const int s = a.locate(b.hi);
+        if (s > 0) return 1;
+        if (s == 0) continue;
+      }
+      if (a.lo > b.lo) {
+        const int s = b.locate(a.lo);
+        if (s < 0) return 1;
+        if (s == 0) continue;
+      }
+      if (a.hi < b.hi) {
+        const int s = b.locate(a.hi);
+        if (s > 0) return -1;
+        if (s == 0) continue;
+      }
+      // Now both isolating intervals are the same I = (lo, hi).
+      if (a.c == b.c || a.poly == b.poly) return 0;  // I holds only one root of that polynomial
+      if (!gcd_done && round >= 6) {
+        gcd_done = true;
+        auto hc = std::make_shared<const internal::Mpz_vector>(internal::gcd_of(*a.c, *b.c));
+        if (hc->size() >= 2) {
+          // h divides both defining polynomials, so it has at most one root in
+          // I, which is then both numbers; equality iff h changes sign on I.
+          const Polynomial_1<Integer> h = internal::polynomial_of(*hc);
+          const int sl = internal::sign_at(*hc, a.lo), sh = internal::sign_at(*hc, a.hi);
+          if (sl != 0 && sh != 0 && sl != sh) {
+            a.set_interval(h, hc, a.lo, a.hi, sl);
+            b.set_interval(h, hc, a.lo, a.hi, sl);
+            return 0;
+          }
+        }
+      }
+      if (!gcd_done) {  // bisect the common interval
+        const Rational m = (a.lo + a.hi) / 2;
+        a.locate(m);
+        if (!a.exact) b.locate(m);
+      } else {  // known to differ: quadratic refinement, doubling the bits gained
+        const Rational w = shrunk_width(a.hi - a.lo, extra_bits);
+        extra_bits = std::min<unsigned long>(2 * extra_bits, 1UL << 20);
+        a.refine_to_width(w);
+        b.refine_to_width(w);
+      }
+    }
+  }
+
+  static int compare(Rep& r, const Rational& q) {
+    if (r.src) {
+      Rep p;
+      p.set_exact(q);
+      const int c = compare_enclosures(r, p);
+      if (c != 2) return c;
+      r.materialize_if_lazy();
+    }
+    if (r.exact) return CGAL::compare(r.lo, q);
+    if (q <= r.lo) return 1;
+    if (q >= r.hi) return -1;
+    return r.locate(q);
+  }
+
   // Compares with the enclosures only (at least one lazy): closed lazy enclosures, open isolating intervals,
   // points for rationals; lazy enclosures are contracted (and exact intervals refined) a few times. Returns 2 when
   // undecided (then both are materialized and compared exactly: equal numbers are never separated this way).
@@ -788,11 +852,13 @@ struct Algebraic_real_access {
     return a;
   }
   static void resolve_rationality(const Algebraic_real& a, bool modular_test_done) {
-    a.materialize();
+    Algebraic_real::Lock lock(a.rep_->mutex);
+    a.rep_->materialize_if_lazy();
     a.rep_->resolve_rationality(modular_test_done);
   }
   static void try_small_rational(const Algebraic_real& a, std::size_t bits) {
-    a.materialize();
+    Algebraic_real::Lock lock(a.rep_->mutex);
+    a.rep_->materialize_if_lazy();
     a.rep_->try_small_rational(bits);
   }
   /// A lazy number: the one of `source` numbered `index`, known to lie in the closed interval [lo, hi] (lo <= hi).
@@ -804,7 +870,7 @@ struct Algebraic_real_access {
     r.hi = hi;
     r.exact = false;
     r.sign_lo = 0;
-    r.poly = Polynomial_1<Integer>();
+    r.poly = Polynomial_1<Integer>(Integer(0));
     r.c.reset();
     r.src = std::move(source);
     r.src_index = index;

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -43,7 +44,8 @@ namespace bezoutian {
 /// a point of curve C at an algebraic parameter t of defining polynomial p has x = X(t)/W(t) with defining
 /// polynomial Res_t(X - x W, p) (arrangement/internal/arr_bezier_exact.h). Intersections come from intersect_curves
 /// (certified, du-1989 ch. 4), cached per pair of supporting curves; the traits object and its copies share
-/// the cache. Objects are not thread-safe (shared lazily refined numbers).
+/// the cache, which is safe to use from several threads (independent arrangements in parallel). One arrangement,
+/// its points and curves are used by one thread at a time (doc/arrangement_traits.md, "Threads").
 class Arr_rational_bezier_traits_2 {
  public:
   using Curve_2 = Rational_bezier_curve_2<Rational>;
@@ -83,23 +85,26 @@ class Arr_rational_bezier_traits_2 {
   const Pair_entry& intersections(const std::shared_ptr<const Supporting>& a, const std::shared_ptr<const Supporting>& b) const {
     BEZOUTIAN_PROFILE_SCOPE("intersections()");
     const auto key = std::make_pair(a->id, b->id);
-    auto it = cache_->pairs.find(key);
-    if (it != cache_->pairs.end()) return it->second;
-    auto rit = cache_->pairs.find(std::make_pair(b->id, a->id));
-    if (rit != cache_->pairs.end()) {
-      Pair_entry e = rit->second;
-      for (auto& c : e.points) std::swap(c.s, c.t);
-      for (auto& o : e.overlaps) {
-        std::swap(o.s0, o.t0);
-        std::swap(o.s1, o.t1);
+    {
+      std::lock_guard<std::mutex> lock(cache_->mutex);
+      auto it = cache_->pairs.find(key);
+      if (it != cache_->pairs.end()) return it->second;
+      auto rit = cache_->pairs.find(std::make_pair(b->id, a->id));
+      if (rit != cache_->pairs.end()) {
+        Pair_entry e = rit->second;
+        for (auto& c : e.points) std::swap(c.s, c.t);
+        for (auto& o : e.overlaps) {
+          std::swap(o.s0, o.t0);
+          std::swap(o.s1, o.t1);
+        }
+        return cache_->pairs.emplace(key, std::move(e)).first->second;
       }
-      return cache_->pairs.emplace(key, std::move(e)).first->second;
     }
     BEZOUTIAN_PROFILE_SCOPE("pair computed");
     // With positive weights each piece lies in the box of its control points (convex hull property).
     const bool disjoint = a != b && internal::arr_pieces_disjoint(*a, *b, 0, 0, 0);
     if (disjoint || (a == b && (a->linear || a->simple)))  // (an arc of a line segment has no self-intersection)
-      return cache_->pairs.emplace(key, Pair_entry()).first->second;
+      return cache_->insert(key, Pair_entry());
     {  // interval subdivision and Krawczyk: exact parameters only on demand
       BEZOUTIAN_PROFILE_SCOPE("interval solver");
       internal::Arr_interval_solver solver{*a, *b, {}};
@@ -131,7 +136,7 @@ class Arr_rational_bezier_traits_2 {
           p.add_origin(b, t);
           e.points.push_back({p, s, t, false});
         }
-        return cache_->pairs.emplace(key, std::move(e)).first->second;
+        return cache_->insert(key, std::move(e));
       }
     }
     Curve_intersection_result r;
@@ -150,7 +155,7 @@ class Arr_rational_bezier_traits_2 {
       e.points.push_back({p, ip.s, ip.t, ip.tangent});
     }
     for (const auto& o : r.overlaps) e.overlaps.push_back({o.s0, o.s1, o.t0, o.t1});
-    return cache_->pairs.emplace(key, std::move(e)).first->second;
+    return cache_->insert(key, std::move(e));
   }
 
   // ------------------------------------------------------------------------------------------- basic predicates
@@ -760,12 +765,23 @@ class Arr_rational_bezier_traits_2 {
   Approximate_2 approximate_2_object() const { return Approximate_2(); }
 
   /// Number of pairs of supporting curves whose intersections are cached.
-  std::size_t cached_pairs() const { return cache_->pairs.size(); }
+  std::size_t cached_pairs() const {
+    std::lock_guard<std::mutex> lock(cache_->mutex);
+    return cache_->pairs.size();
+  }
 
  private:
   using Ci_poly1 = internal::Ci_poly1;
+  // Shared by the copies of a traits object, which independent arrangements may use from several threads: the map
+  // is read and extended under `mutex`; a pair is computed without it (an entry inserted meanwhile is kept), and
+  // entries never move or change once inserted.
   struct Cache {
+    std::mutex mutex;
     std::map<std::pair<std::size_t, std::size_t>, Pair_entry> pairs;
+    const Pair_entry& insert(const std::pair<std::size_t, std::size_t>& key, Pair_entry e) {
+      std::lock_guard<std::mutex> lock(mutex);
+      return pairs.emplace(key, std::move(e)).first->second;
+    }
   };
   std::shared_ptr<Cache> cache_;
 };
