@@ -42,6 +42,18 @@ inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool is_hex_digit(char c) { return is_digit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
 inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
 
+/// True (and a message) if the numerator or the denominator of q, in lowest terms, exceeds max_number_bits.
+inline bool exceeds_number_bits(const Rational& q, std::string& message) {
+  for (mpz_srcptr part : {mpq_numref(q.mpq()), mpq_denref(q.mpq())})
+    if (mpz_sgn(part) != 0 && mpz_sizeinbase(part, 2) > max_number_bits) {
+      message = "number too large: " + std::to_string(mpz_sizeinbase(part, 2)) + " bits in its " +
+                (part == mpq_numref(q.mpq()) ? "numerator" : "denominator") + " (at most " +
+                std::to_string(max_number_bits) + ")";
+      return true;
+    }
+  return false;
+}
+
 inline std::string quoted_char(char c) {
   if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "a control character";
   return std::string("'") + c + "'";
@@ -134,14 +146,13 @@ inline bool scan_unsigned_number(const std::string& text, std::size_t& pos, Rati
     else
       den = power;
   }
-  for (const Integer* part : {&num, &den})
-    if (!CGAL::is_zero(*part) && mpz_sizeinbase(part->mpz(), 2) > max_number_bits) {
-      error_offset = pos;
-      message = "number too large: " + std::to_string(mpz_sizeinbase(part->mpz(), 2)) + " bits in its " +
-                (part == &num ? "numerator" : "denominator") + " (at most " + std::to_string(max_number_bits) + ")";
-      return false;
-    }
+  // the bound applies to the value in lowest terms: "0.5" has the numerator 1, and the decimal text of 2^-4000
+  // (4000 digits, as to_exact_decimal_string() writes it) is read back
   value = Rational(num, den);
+  if (internal::exceeds_number_bits(value, message)) {
+    error_offset = pos;
+    return false;
+  }
   pos = p;
   return true;
 }
@@ -172,6 +183,7 @@ inline Exact_number_result parse_exact_number(const std::string& text) {
     return r;
   }
   Rational numerator;
+  const std::size_t start = p;
   if (!scan_unsigned_number(text, p, numerator, r.error_offset, r.message)) return r;
   if (p < n && text[p] == '/') {
     const std::size_t bar = p++;
@@ -188,6 +200,11 @@ inline Exact_number_result parse_exact_number(const std::string& text) {
       return r;
     }
     numerator /= denominator;
+    // each part obeys the bound, their quotient may not ("1e1000/1e-1000" is 10^2000)
+    if (internal::exceeds_number_bits(numerator, r.message)) {
+      r.error_offset = start;
+      return r;
+    }
   }
   while (p < n && internal::is_space(text[p])) ++p;
   if (p < n) {

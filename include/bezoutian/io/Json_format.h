@@ -771,6 +771,13 @@ class Json_geometry_reader {
     }
     if (CGAL::is_zero(q[0])) j_.fail(n["w"].ptr, "the weight polynomial w is identically zero");
     const std::pair<int, int> deg = n.has("degree") ? bidegree(n) : std::pair<int, int>(-1, -1);
+    // a declared bi-degree costs (m+1)(n+1) control points whatever the expressions hold: it obeys their degree bound
+    const int max_degree = Expression_limits().max_degree;
+    for (std::size_t k = 0; k < 2; ++k)
+      if ((k == 0 ? deg.first : deg.second) > max_degree)
+        j_.fail(n["degree"][k].ptr, "expected a degree of at most " + std::to_string(max_degree) +
+                                        " in a power-basis patch (the bound of its expressions), got " +
+                                        std::to_string(k == 0 ? deg.first : deg.second));
     try {
       doc_.add(Patch::from_power_form(q, deg.first, deg.second), name(n));
     } catch (const Invalid_input& e) {

@@ -1,0 +1,44 @@
+// Entry functions of the fuzz targets, shared by the libFuzzer drivers (libfuzzer_main_<target>.cpp) and by the
+// replay program (replay.cpp) that runs the stored corpus and regression inputs under ctest.
+//
+// Each function feeds the bytes to one public reader. Returning means the input was read or refused with the
+// reader's documented error type; anything else (another exception, a violated invariant) ends the process
+// through fuzz_failure(), which libFuzzer and ctest both report as a failure.
+#ifndef BEZOUTIAN_FUZZ_TARGETS_H
+#define BEZOUTIAN_FUZZ_TARGETS_H
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace bezoutian {
+namespace fuzz {
+
+/// \brief JSON geometry documents: io::read_json() refuses only with Parse_error; what it reads is written by
+/// io::write_json() in both bases and read back equal.
+void json_document(const std::uint8_t* data, std::size_t size);
+
+/// \brief Polynomial expressions and exact numbers: the first byte picks io::parse_exact_number(),
+/// io::parse_polynomial_1() in t or io::parse_polynomial_2() in (s, t); the rest is the text. Refusals are
+/// io::Expression_error (numbers: a result with ok == false and an offset inside the text); what is read is
+/// printed and read back equal.
+void polynomial_expression(const std::uint8_t* data, std::size_t size);
+
+/// \brief CGAL .dat Bezier curves: io::read_dat() refuses only with Parse_error; what it reads is written by
+/// io::write_dat() and read back equal.
+void cgal_dat(const std::uint8_t* data, std::size_t size);
+
+/// \brief BPT patches: io::read_bpt() refuses only with Parse_error; what it reads is written by io::write_bpt()
+/// and read back equal.
+void bpt(const std::uint8_t* data, std::size_t size);
+
+/// Prints the reason (and the input being replayed, if any) to stderr and aborts.
+[[noreturn]] void fuzz_failure(const std::string& reason);
+
+/// Name of the input being replayed, shown by fuzz_failure() ("" under libFuzzer, which names it itself).
+std::string& current_input_name();
+
+} // namespace fuzz
+} // namespace bezoutian
+
+#endif // BEZOUTIAN_FUZZ_TARGETS_H
