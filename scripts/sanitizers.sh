@@ -74,7 +74,9 @@ cmake -S "$dir/project" -B "$dir" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_COMPILER="
       "-DCMAKE_CXX_FLAGS=$flags" "-DCMAKE_EXE_LINKER_FLAGS=$flags" > "$dir/configure.log" 2>&1 ||
   { cat "$dir/configure.log"; exit 1; }
 cmake --build "$dir" -j"${BEZOUTIAN_SANITIZER_JOBS:-$(nproc)}" --target "$name" > "$dir/build.log" 2>&1 || { tail -n 80 "$dir/build.log"; exit 1; }
-echo "sanitizer ($mode) build time: $(( $(date +%s) - start )) s"
+echo "sanitizer ($mode) build time: $(( $(date +%s) - start )) s (user and system time of this script and its children:"
+times
+echo ")"
 
 start=$(date +%s)
 supp="$root/scripts/sanitizer-$mode.supp"
