@@ -9,6 +9,10 @@
 #include <string>
 #include <vector>
 
+namespace bezoutian {
+struct Intersection_limits;
+}
+
 namespace bezoutian_cli {
 
 /// A subcommand registers itself on the application and returns the action to run when selected.
@@ -32,7 +36,24 @@ struct Intersect_options {
   double fallback_seconds = 60;     // patches: time allowed to CGAL's curve analysis (0: no limit)
   std::string patches;              // patches: "I,J" indices (0-based) of the patches to use (default 0,1 / 0)
   bool json = false;
+  // Resource limits (bezoutian::Intersection_limits; the defaults are the library's)
+  double time_limit = 0;               // seconds for the whole command (0: none); curves also check it between stages
+  int max_input_degree = 64;           // curves, curve/patch: largest degree of a curve, of a patch in u and in v
+  long max_control_points = 4225;      // curves, curve/patch: largest number of control points of one object
+  long max_degree_product = 1024;      // curves: deg C1 deg C2; curve/patch: 2 m n deg C
+  long max_coefficient_bits = 4096;    // curves, curve/patch: largest numerator/denominator of a control point
 };
+
+/// The library's resource limits from the options (defined in examples/cli/curve_intersect.cpp).
+bezoutian::Intersection_limits intersection_limits(const Intersect_options& o);
+
+/// Exit status of a command stopped by a resource limit (an input limit or the time limit).
+constexpr int limit_exit_status = 4;
+
+/// Stops the process after `seconds` + 1 s (a separate thread; 0: no limit) with the message
+/// "bezoutian: error: <command>: time_limit exceeded ..." and exit status limit_exit_status: the bound for stages
+/// of a computation that do not check the time budget themselves.
+void start_time_limit(double seconds, const std::string& command);
 
 /// Curve/curve and curve/patch intersection (examples/cli/curve_intersect.cpp).
 void run_curve_intersect(const Intersect_options& o);

@@ -105,17 +105,29 @@ void report(const Curve& a, const Curve& b, const bezoutian::Curve_intersection_
 }
 
 template <class Curve>
-void run(const Curve& a, const Curve& b, const std::string& method, bool json) {
-  const auto m = bezoutian::curve_intersection_method_from_string(method);
+void run(const Curve& a, const Curve& b, const bezoutian_cli::Intersect_options& o) {
+  bezoutian::Curve_intersection_options options;
+  options.method = bezoutian::curve_intersection_method_from_string(o.method);
+  options.limits = bezoutian_cli::intersection_limits(o);
   const auto t0 = std::chrono::steady_clock::now();
-  const auto r = bezoutian::intersect_curves(a, b, m);
+  const auto r = bezoutian::intersect_curves(a, b, options);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  report(a, b, r, method, s, json);
+  report(a, b, r, o.method, s, o.json);
 }
 
 } // namespace
 
 namespace bezoutian_cli {
+bezoutian::Intersection_limits intersection_limits(const Intersect_options& o) {
+  bezoutian::Intersection_limits l;
+  l.max_degree = o.max_input_degree;
+  l.max_control_points = o.max_control_points;
+  l.max_degree_product = o.max_degree_product;
+  l.max_coefficient_bits = o.max_coefficient_bits;
+  l.time_limit = o.time_limit;
+  return l;
+}
+
 void run_curve_intersect(const Intersect_options& o) {
   const Curves A = load_curves(o.file_a);
   Curves B;
@@ -125,12 +137,12 @@ void run_curve_intersect(const Intersect_options& o) {
     return run_curve_patch_intersect(o);
   }
   if (o.file_b.empty()) {
-    if (A.c2.size() >= 2) return run(A.c2[0], A.c2[1], o.method, o.json);
-    if (A.c3.size() >= 2) return run(A.c3[0], A.c3[1], o.method, o.json);
+    if (A.c2.size() >= 2) return run(A.c2[0], A.c2[1], o);
+    if (A.c3.size() >= 2) return run(A.c3[0], A.c3[1], o);
     throw bezoutian::Invalid_input(o.file_a + ": expected two curves of the same dimension (or give FILE_B)");
   }
-  if (!A.c2.empty() && !B.c2.empty()) return run(A.c2[0], B.c2[0], o.method, o.json);
-  if (!A.c3.empty() && !B.c3.empty()) return run(A.c3[0], B.c3[0], o.method, o.json);
+  if (!A.c2.empty() && !B.c2.empty()) return run(A.c2[0], B.c2[0], o);
+  if (!A.c3.empty() && !B.c3.empty()) return run(A.c3[0], B.c3[0], o);
   throw bezoutian::Invalid_input("expected a curve in each file, both planar or both spatial");
 }
 } // namespace bezoutian_cli

@@ -62,7 +62,8 @@ void run_curve_patch_intersect(const Intersect_options& o) {
     throw bezoutian::Invalid_input("curve/patch intersection has only the default method");
   const auto& c = curves.front();
   const auto t0 = std::chrono::steady_clock::now();
-  const bezoutian::Curve_patch_intersection_result r = bezoutian::intersect_curve_patch(c, patches.front());
+  const bezoutian::Curve_patch_intersection_result r =
+      bezoutian::intersect_curve_patch(c, patches.front(), intersection_limits(o));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.json) {
     nlohmann::json j;

@@ -37,11 +37,18 @@ inline Geometry_document read_bpt(const std::string& text, const std::string& fi
                      " patches were announced)");
     // (m+1)(n+1) points of 3 numbers each must follow the two degrees
     const std::size_t left = in.remaining() >= 2 ? (in.remaining() - 2) / 3 : 0;  // points that can follow
-    const std::size_t m = in.take_count("the degree in u of " + patch, 0, left == 0 ? 0 : left - 1,
-                                        "only " + std::to_string(left) + " points follow: is the file truncated?");
-    const std::size_t n = in.take_count("the degree in v of " + patch, 0, left / (m + 1) == 0 ? 0 : left / (m + 1) - 1,
-                                        "only " + std::to_string(left) + " points follow for " + std::to_string(m + 1) +
-                                            " rows: is the file truncated?");
+    const std::string limit = "the readers' limit io::max_object_degree = " + std::to_string(max_object_degree);
+    const std::size_t m_max = left == 0 ? 0 : left - 1;
+    const std::size_t m = m_max > max_object_degree
+                              ? in.take_count("the degree in u of " + patch, 0, max_object_degree, limit)
+                              : in.take_count("the degree in u of " + patch, 0, m_max,
+                                              "only " + std::to_string(left) + " points follow: is the file truncated?");
+    const std::size_t n_max = left / (m + 1) == 0 ? 0 : left / (m + 1) - 1;
+    const std::size_t n = n_max > max_object_degree
+                              ? in.take_count("the degree in v of " + patch, 0, max_object_degree, limit)
+                              : in.take_count("the degree in v of " + patch, 0, n_max,
+                                              "only " + std::to_string(left) + " points follow for " +
+                                                  std::to_string(m + 1) + " rows: is the file truncated?");
     std::vector<std::vector<Geometry_document::Patch::Point>> net(m + 1, std::vector<Geometry_document::Patch::Point>(n + 1));
     static const char* const axis[3] = {"x", "y", "z"};
     for (std::size_t r = 0; r <= m; ++r)

@@ -32,8 +32,13 @@ inline Geometry_document read_dat(const std::string& text, const std::string& fi
     const std::string curve = "curve " + std::to_string(c);
     if (in.at_end()) in.fail_at_end("unexpected end of file; expected " + curve + " (" + std::to_string(n) +
                                     " curves were announced)");
-    const std::size_t k = in.take_count("the number of control points of " + curve, 1, (in.remaining() - 1) / 2,
-                                        "only " + std::to_string(in.remaining() - 1) + " numbers follow: is the file truncated?");
+    const std::size_t left = (in.remaining() - 1) / 2;  // points that can follow
+    const std::size_t k =
+        left > max_object_degree + 1
+            ? in.take_count("the number of control points of " + curve, 1, max_object_degree + 1,
+                            "the readers' limit io::max_object_degree = " + std::to_string(max_object_degree))
+            : in.take_count("the number of control points of " + curve, 1, left,
+                            "only " + std::to_string(in.remaining() - 1) + " numbers follow: is the file truncated?");
     std::vector<Geometry_document::Curve_2::Point> points(k);
     for (std::size_t i = 0; i < k; ++i)
       for (int d = 0; d < 2; ++d)

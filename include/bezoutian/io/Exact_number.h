@@ -27,6 +27,11 @@ constexpr long max_binary_exponent = 400000;
 /// with such coefficients reach cost far more than their size suggests (a quadratic with the coordinate 1e3000 never
 /// finished).
 constexpr std::size_t max_number_bits = 4096;
+/// Largest degree of a curve, and of a patch in u and in v, that the readers accept: at most 1001 control points per
+/// curve and per row or column of a net. Far above CAD data (degrees <= 25) and above the intersection limits
+/// (Intersection_limits::max_degree = 64), so that `info` still describes such files; a curve with 100,000 control
+/// points is refused at its count (file:line:column) before it is read.
+constexpr std::size_t max_object_degree = 1000;
 
 /// Outcome of parsing a number: the value, or the offset of the offending character and what was expected.
 struct Exact_number_result {

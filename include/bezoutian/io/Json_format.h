@@ -516,8 +516,12 @@ class Json_geometry_reader {
     const bool homogeneous = n.has("homogeneous") && boolean(n["homogeneous"], "\"homogeneous\"");
     Node pts = array(required(n, "points", "a Bernstein curve needs its control points"), "the control points");
     if (pts.size() == 0) j_.fail(pts.ptr, "expected at least one control point");
+    if (pts.size() > max_object_degree + 1)
+      j_.fail(pts.ptr, "expected at most " + std::to_string(max_object_degree + 1) +
+                           " control points (the readers' limit io::max_object_degree = " +
+                           std::to_string(max_object_degree) + "), got " + std::to_string(pts.size()));
     if (n.has("degree")) {
-      const int d = count(n["degree"], "the degree");
+      const int d = count(n["degree"], "the degree", int(max_object_degree));
       if (pts.size() != std::size_t(d) + 1)
         j_.fail(pts.ptr, "expected " + std::to_string(d + 1) + " control points (degree " + std::to_string(d) + "), got " +
                              std::to_string(pts.size()));
@@ -636,7 +640,7 @@ class Json_geometry_reader {
       q.push_back(to_polynomial_1(expression(e, vars, std::string("the polynomial ") + keys[k])));
     }
     if (CGAL::is_zero(q[0])) j_.fail(n["w"].ptr, "the weight polynomial w is identically zero");
-    const int degree = n.has("degree") ? count(n["degree"], "the degree") : -1;
+    const int degree = n.has("degree") ? count(n["degree"], "the degree", int(max_object_degree)) : -1;
     try {
       if (q.size() == 3)
         doc_.add(Curve_2::from_power_form({q[0], q[1], q[2]}, degree), name(n));
@@ -680,7 +684,7 @@ class Json_geometry_reader {
   std::pair<int, int> bidegree(const Node& n) const {
     Node d = array(n["degree"], "the bi-degree [m, n]");
     if (d.size() != 2) j_.fail(d.ptr, "expected the bi-degree [m, n] (two integers), got " + type_name(d.v));
-    return {count(d[0], "the degree m in u"), count(d[1], "the degree n in v")};
+    return {count(d[0], "the degree m in u", int(max_object_degree)), count(d[1], "the degree n in v", int(max_object_degree))};
   }
 
   void bernstein_patch(const Node& n) {
@@ -690,12 +694,20 @@ class Json_geometry_reader {
     const bool has_degree = n.has("degree");
     const std::pair<int, int> deg = has_degree ? bidegree(n) : std::pair<int, int>(-1, -1);
     if (rows.size() == 0) j_.fail(rows.ptr, "expected at least one row of control points");
+    if (rows.size() > max_object_degree + 1)
+      j_.fail(rows.ptr, "expected at most " + std::to_string(max_object_degree + 1) +
+                            " rows of control points (the readers' limit io::max_object_degree = " +
+                            std::to_string(max_object_degree) + "), got " + std::to_string(rows.size()));
     if (has_degree && rows.size() != std::size_t(deg.first) + 1)
       j_.fail(rows.ptr, "expected " + std::to_string(deg.first + 1) + " rows of control points (degree m = " +
                             std::to_string(deg.first) + " in u), got " + std::to_string(rows.size()));
     Node row0 = array(rows[0], "row 0 of the control net");
     const std::size_t columns = has_degree ? std::size_t(deg.second) + 1 : row0.size();
     if (columns == 0) j_.fail(row0.ptr, "expected at least one control point in row 0");
+    if (columns > max_object_degree + 1)
+      j_.fail(row0.ptr, "expected at most " + std::to_string(max_object_degree + 1) +
+                            " control points per row (the readers' limit io::max_object_degree = " +
+                            std::to_string(max_object_degree) + "), got " + std::to_string(columns));
     const std::size_t length = homogeneous ? 4 : 3;
     for (std::size_t i = 0; i < rows.size(); ++i) {  // check the shape before allocating the net
       Node row = array(rows[i], "row " + std::to_string(i) + " of the control net");
