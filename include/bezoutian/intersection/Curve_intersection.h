@@ -123,8 +123,8 @@ struct Intersection_limits {
 
 /// Options of intersect_curves and self_intersections: the elimination method and the resource limits.
 struct Curve_intersection_options {
-  Curve_intersection_method method = Curve_intersection_method::default_method;
-  Intersection_limits limits;
+  Curve_intersection_method method = Curve_intersection_method::default_method;  ///< how R(s), T(t) are computed
+  Intersection_limits limits;  ///< size limits and time budget (Limit_exceeded, Budget_exceeded)
 };
 
 namespace internal {
