@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs what Bezoutian needs on Debian bookworm (run as root). Skips apt when everything is present.
+# g++ brings the sanitizer run-time libraries of scripts/sanitizers.sh (libasan8, libubsan1, libtsan2).
 set -euo pipefail
 packages=(g++ cmake make ccache libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
           catch2 nlohmann-json3-dev libcli11-dev doxygen

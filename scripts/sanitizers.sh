@@ -3,7 +3,8 @@
 #
 #   scripts/sanitizers.sh thread  [TEST_SPEC...]   ThreadSanitizer: test/core/thread_safety_test.cpp alone
 #   scripts/sanitizers.sh address [TEST_SPEC...]   AddressSanitizer + UndefinedBehaviorSanitizer: bezoutian_tests
-#                                                  (test/core, the tests without CGAL's algebraic kernels)
+#                                                  (test/core, the tests without CGAL's algebraic kernels), or only
+#                                                  the files of test/core named in $BEZOUTIAN_SANITIZER_SOURCES
 #
 # TEST_SPEC are Catch2 test specs (tags, names) passed to the executable; without them every test case of it runs.
 # The build folder is $BEZOUTIAN_SANITIZER_BUILD_DIR, default build/sanitizer-<mode> (inside the ignored build/);
@@ -23,6 +24,10 @@ case "$mode" in
   address)
     flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined"
     sources="$root/test/core/*.cpp"
+    if [ -n "${BEZOUTIAN_SANITIZER_SOURCES:-}" ]; then
+      sources=""
+      for f in $BEZOUTIAN_SANITIZER_SOURCES; do sources="$sources $root/test/core/$f"; done
+    fi
     name=bezoutian_tests ;;
   *)
     echo "usage: $0 thread|address [Catch2 test spec...]" >&2
