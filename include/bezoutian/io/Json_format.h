@@ -684,7 +684,7 @@ class Json_geometry_reader {
   std::pair<int, int> bidegree(const Node& n) const {
     Node d = array(n["degree"], "the bi-degree [m, n]");
     if (d.size() != 2) j_.fail(d.ptr, "expected the bi-degree [m, n] (two integers), got " + type_name(d.v));
-    return {count(d[0], "the degree m in u", int(max_object_degree)), count(d[1], "the degree n in v", int(max_object_degree))};
+    return {count(d[0], "the degree m in u"), count(d[1], "the degree n in v")};
   }
 
   void bernstein_patch(const Node& n) {
