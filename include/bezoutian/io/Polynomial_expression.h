@@ -51,6 +51,12 @@ struct Expression_limits {
   /// Largest numerator and denominator, in bits, of a coefficient of the expanded result (as for a number read,
   /// io::max_number_bits): products and powers of constants cannot bring the engine coefficients it cannot afford.
   std::size_t max_coefficient_bits = max_number_bits;
+  /// Largest work of the expansion, in products of coefficient sizes: multiplying two polynomials costs the sum over
+  /// all pairs of terms of (1 + limbs of one coefficient) (1 + limbs of the other), dividing by a constant the sum
+  /// over the terms of (1 + limbs) (1 + limbs of the divisor). The degree bound alone admits 30-byte expressions
+  /// such as ((s+1)(t+1))^50*((s+2)(t+3))^50, and large or repeated constants make each product dearer; this bound
+  /// keeps every expression below about a second.
+  double max_expansion_work = 5e7;
 };
 
 namespace internal {
@@ -133,11 +139,27 @@ class Expression_parser {
     }
   }
 
-  Sparse_polynomial multiply(const Sparse_polynomial& a, const Sparse_polynomial& b, std::size_t where) const {
+  // 1 + limbs of a coefficient, summed over the terms
+  static double size_in_limbs(const Sparse_polynomial& p) {
+    double w = 0;
+    for (const auto& t : p) w += 1.0 + double(mpz_size(mpq_numref(t.second.mpq())) + mpz_size(mpq_denref(t.second.mpq())));
+    return w;
+  }
+
+  void spend(double work, std::size_t where) {
+    work_ += work;
+    if (work_ > lim_.max_expansion_work)
+      throw Expression_error(where, "expanding the expression takes more than " +
+                                        std::to_string(static_cast<long long>(lim_.max_expansion_work)) +
+                                        " products of coefficient limbs (Expression_limits::max_expansion_work)");
+  }
+
+  Sparse_polynomial multiply(const Sparse_polynomial& a, const Sparse_polynomial& b, std::size_t where) {
     std::vector<int> da = degrees(a), db = degrees(b);
     for (std::size_t k = 0; k < vars_.size(); ++k)
       if (!a.empty() && !b.empty() && da[k] + db[k] > lim_.max_degree)
         throw Expression_error(where, "the degree in " + vars_[k] + " exceeds " + std::to_string(lim_.max_degree));
+    spend(size_in_limbs(a) * size_in_limbs(b), where);
     Sparse_polynomial r;
     for (const auto& x : a)
       for (const auto& y : b) {
@@ -182,6 +204,7 @@ class Expression_parser {
           throw Expression_error(divisor_start, "division by a non-constant polynomial (only constant divisors are allowed)");
         if (d.empty()) throw Expression_error(divisor_start, "division by zero");
         const Rational q = constant_value(d);
+        spend(size_in_limbs(p) * size_in_limbs(d), op);
         for (auto& t : p) t.second /= q;
       } else if (is_identifier_start(c) || c == '(') {
         p = multiply(p, unary(), op);  // juxtaposition: "2s", "(s+1)(t-1)"
@@ -290,6 +313,7 @@ class Expression_parser {
   Expression_limits lim_;
   std::size_t pos_ = 0;
   int depth_ = 0;
+  double work_ = 0;  // spent so far, see Expression_limits::max_expansion_work
 };
 
 } // namespace internal
