@@ -235,6 +235,9 @@ std::vector<Family> families() {
 // Our reported geometry: sheets, edge lines, isolated contacts, shared boundary curves, overlap regions.
 struct Ours {
   bool answered = false, certified = false;
+  // the largest fractions of an arc (with genuine or undecided points) whose genuine / phantom status, and whose
+  // fibre (every partner found), are not proved
+  double status_undecided = 0, fibre_undecided = 0;
   std::vector<Polyline> geometry;
   std::string note;
 };
@@ -256,8 +259,11 @@ Ours ours(const Family& f) {
   for (const auto& a : L.arcs) {
     bool genuine = false;
     for (const auto& q : a.points) genuine = genuine || q.genuine;
-    if (genuine || a.undecided_fraction > 0) out.certified = out.certified && a.undecided_fraction == 0 &&
-                                                             a.fibre_undecided_fraction == 0;
+    if (genuine || a.undecided_fraction > 0) {
+      out.certified = out.certified && a.undecided_fraction == 0 && a.fibre_undecided_fraction == 0;
+      out.status_undecided = std::max(out.status_undecided, a.undecided_fraction);
+      out.fibre_undecided = std::max(out.fibre_undecided, a.fibre_undecided_fraction);
+    }
     for (const auto& s : a.sheets) {
       Polyline l;
       for (const auto& q : s.points) l.push_back(q.point_3d);
@@ -384,8 +390,12 @@ int main(int argc, char** argv) {
     Ours r;
     const double t_ours = median_seconds(repetitions, [&] { r = ours(f); });
     const double gap = f.samples.empty() ? (r.geometry.empty() ? 0 : -1) : worst_gap(f.samples, r.geometry);
+    char certified[96] = "yes";
+    if (!r.certified)
+      std::snprintf(certified, sizeof certified, "no (undecided: status %.1f %%, fibre %.1f %%)",
+                    100 * r.status_undecided, 100 * r.fibre_undecided);
     std::printf("| %s | %s | %s | %s | %s | %.2f |", f.name.c_str(), f.answer.c_str(), r.answered ? "yes" : "no",
-                r.certified ? "yes" : "no",
+                certified,
                 gap < 0 ? "spurious" : (f.samples.empty() ? "none, proved" : gap_text(gap)).c_str(), 1e3 * t_ours);
 #ifdef BEZOUTIAN_WITH_OCCT
     const auto A = occt_surface(f.phi), B = occt_surface(f.psi);

@@ -730,7 +730,7 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--tolerance", o->tolerance, "precision of the traced points' ordinates (default 1e-9)");
   sub->add_option("--polyline-tolerance", o->polyline_tolerance,
                   "refine the lifted polylines until their chords are this close to the curve, in 3D and in the "
-                  "parameter domain (midpoint test; e.g. 1e-3; default 0: off)");
+                  "parameter domain (midpoint test; default 1e-3; 0: the uniform samples of the topology)");
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_option("--fallback-seconds", o->fallback_seconds,

@@ -82,9 +82,9 @@ struct Surface_intersection_options {
   /// lifted curve strays from its chord by more than this at the span's midpoint, in 3D or in either parameter
   /// domain (a floating-point midpoint test, not a proved bound), and where a sheet begins or ends inside it; the
   /// arcs of two patches over one projection and the genuine box sides on D = 0 (edge lines) are refined by the
-  /// same test. Off by default (0: the uniform samples): next to seams, where a partner runs along the domain's
-  /// boundary, refined points can be left without a proved status; 1e-3 is fine enough to draw patches of unit size.
-  double polyline_tolerance = 0;
+  /// same test. The default, 1e-3, draws patches of unit size without visible chords; 0 keeps the uniform samples
+  /// of the topology (doc/surface_intersection.md, step 5, measures both).
+  double polyline_tolerance = 1e-3;
   /// At most this many points added by the refinement per locus.
   std::size_t max_refinement_points = 20000;
   /// At most this many traced points per locus get their complete fibre (every partner, about 1 ms each on

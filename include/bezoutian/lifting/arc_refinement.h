@@ -193,7 +193,6 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
       // exactly), nor a change among partners outside the domain (next to a seam)
       const bool fold = fibres[i].size() != fibres[i + 1].size() &&
                         inside_count(xa, fibres[i]) != inside_count(xb, fibres[i + 1]);
-      const bool change = fold;
       const double located = std::ldexp(width, -40);
       // chords are refined between genuine points only (where a sheet leaves the domain the split-point proofs
       // place the end of its genuine part)
@@ -205,7 +204,7 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
         ++i;
         continue;
       }
-      if (change) {
+      if (fold) {
         // bisection down to 2^-40 of the cell (without keeping the intermediate points), then the last points on
         // both sides of the change join the arc
         std::array<double, 2> pa = xa, pb = xb;
@@ -216,24 +215,27 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
           std::array<double, 2> x;
           if (!arc_point(cell, axis, 0.5 * (pa[std::size_t(axis)] + pb[std::size_t(axis)]), pa, Fa, pb, Fb, x)) break;
           auto F = model.fibre(x);
-          if (inside_count(x, F) == ca && (!fold || F.size() == Fa.size()))
+          if (inside_count(x, F) == ca)
             pa = x, Fa = std::move(F), moved_a = true;
           else
             pb = x, Fb = std::move(F), moved_b = true;
         }
-        if (!moved_a && !moved_b) {  // (a change across a span already short enough: located)
+        // located: the number of partners in the domain changes between pa and pb. A fold changes the number of
+        // real partners there too; where it does not, a partner crosses the domain's boundary (a split point,
+        // located exactly by its own proofs), and the number of real partners changed elsewhere in the span, near
+        // the margin of the partner domain the fibre is searched in: no point is added for either
+        // (nor where the change is at an end of the span: that traced point is already the end of the sheets, as
+        // where an arc of D = 0 ends on a seam with its partner on the partner domain's side)
+        const double end_gap = std::ldexp(width, -30);
+        const bool at_end = std::fabs(pb[std::size_t(axis)] - tb) <= end_gap || std::fabs(pa[std::size_t(axis)] - ta) <= end_gap;
+        if ((!moved_a && !moved_b) || Fa.size() == Fb.size() || at_end) {
           ++i;
           continue;
         }
-        // only the point on the side with more partners in the domain joins the arc (the sheets reach the fold there; a point
-        // beyond it, without a partner, would add nothing)
+        // only the point on the side with more partners in the domain joins the arc (the sheets reach the fold
+        // there; a point beyond it, without a partner, would add nothing)
         const bool a_side = inside_count(xa, fibres[i]) > inside_count(xb, fibres[i + 1]);
-        if (a_side && moved_a) insert_after(i, pa, std::move(Fa));
-        else if (!a_side && moved_b) insert_after(i, pb, std::move(Fb));
-        else {
-          ++i;
-          continue;
-        }
+        insert_after(i, a_side ? pa : pb, std::move(a_side ? Fa : Fb));
         if (!a_side) ++i;  // the change now lies in the span (i, pb) ... (pb, xb): continue after pb
         // the span at i again: now either without a change (chord test) or across the located change (skipped)
         continue;

@@ -55,7 +55,8 @@ struct Edge_sheets {
   std::vector<Partner_sheet> sheets;
   double undecided_fraction = 1;
   /// the share whose genuine / phantom status this proof leaves open: a complete span is phantom without sheets,
-  /// genuine with a sheet proved inside the domain over the whole span, else open
+  /// or with every sheet proved outside it, genuine with a sheet proved inside the domain over the whole span, else
+  /// open
   double status_undecided_fraction = 1;
 };
 
@@ -391,10 +392,15 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         }
         std::vector<std::array<D, 3>> K;
         if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget)) {
-          bool genuine = false;
-          for (const auto& k : K)
-            genuine = genuine || status_from_partner(eq, domain, false, axis, Ts, k, nullptr, true) == Partner_status::genuine;
-          if (!genuine) status_open += std::fabs(t1 - t0);
+          // every partner in the domain is in some K_j: genuine if one K_j lies inside the domain, phantom if every
+          // K_j lies outside it (then no partner is in the domain), else open
+          bool genuine = false, outside = true;
+          for (const auto& k : K) {
+            const Partner_status st = status_from_partner(eq, domain, false, axis, Ts, k, nullptr, true);
+            genuine = genuine || st == Partner_status::genuine;
+            outside = outside && st == Partner_status::outside;
+          }
+          if (!genuine && !outside) status_open += std::fabs(t1 - t0);
           for (int end = 0; end < 2; ++end) {  // the enclosures at the polyline points the part reaches
             if ((end == 0 ? sp.f0 : sp.f1) != end || ends_done[end]) continue;
             ends_done[end] = true;
