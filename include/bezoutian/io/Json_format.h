@@ -704,10 +704,6 @@ class Json_geometry_reader {
     Node row0 = array(rows[0], "row 0 of the control net");
     const std::size_t columns = has_degree ? std::size_t(deg.second) + 1 : row0.size();
     if (columns == 0) j_.fail(row0.ptr, "expected at least one control point in row 0");
-    if (columns > max_object_degree + 1)
-      j_.fail(row0.ptr, "expected at most " + std::to_string(max_object_degree + 1) +
-                            " control points per row (the readers' limit io::max_object_degree = " +
-                            std::to_string(max_object_degree) + "), got " + std::to_string(columns));
     const std::size_t length = homogeneous ? 4 : 3;
     for (std::size_t i = 0; i < rows.size(); ++i) {  // check the shape before allocating the net
       Node row = array(rows[i], "row " + std::to_string(i) + " of the control net");
@@ -716,6 +712,10 @@ class Json_geometry_reader {
                              (has_degree ? " (degree n = " + std::to_string(deg.second) + " in v)" : " (as in row 0)") +
                              ", got " + std::to_string(row.size()));
     }
+    if (columns > max_object_degree + 1)
+      j_.fail(row0.ptr, "expected at most " + std::to_string(max_object_degree + 1) +
+                            " control points per row (the readers' limit io::max_object_degree = " +
+                            std::to_string(max_object_degree) + "), got " + std::to_string(columns));
     Patch::Net net(rows.size(), std::vector<Patch::Homogeneous_point>(columns));
     for (std::size_t i = 0; i < rows.size(); ++i) {
       Node row = rows[i];
