@@ -1619,9 +1619,20 @@ TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one l
   const Surface_locus L = intersection_locus(sphere, plane, fine);
   INFO(L.note);
   REQUIRE(L.topology_computed);
-  std::size_t long_sheets = 0;
+  std::size_t long_sheets = 0, past_fold = 0;
   for (const auto& arc : L.arcs) {
-    CHECK(arc.fibre_undecided_fraction < 0.1);  // (near the fold, where the two sheets meet)
+    // every partner proved, up to the fold and beyond it (partner_fold_proofs.h: the spans next to the fold are
+    // decided in the chart of the partner coordinate)
+    CHECK(arc.fibre_undecided_fraction == 0);
+    CHECK(arc.undecided_fraction == 0);
+    for (const auto& q : arc.points) {
+      const double t = q.projection[1];
+      if (std::fabs(t - 12.0 / 17) < 1e-12 || std::fabs(t - 15.0 / 17) < 1e-12) continue;
+      INFO("t = " << t);
+      CHECK(q.status_proved);
+      CHECK(q.genuine == (12.0 / 17 < t && t < 15.0 / 17));  // two real partners b, 1/b in [1/2, 2] exactly there
+      past_fold += t > 15.0 / 17 && t < 15.0 / 17 + 0.01;
+    }
     for (const auto& s : arc.sheets) {
       long_sheets += s.points.size() > 10;
       for (const auto& q : s.points) {
@@ -1632,6 +1643,7 @@ TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one l
     }
   }
   CHECK(long_sheets == 2);
+  CHECK(past_fold >= 1);  // (the refinement puts traced points next to the fold on both sides)
   std::vector<std::array<std::array<double, 3>, 3>> samples;
   for (int k = 0; k <= 2000; ++k) {
     const double bb = 0.5 + 1.5 * k / 2000;  // the longitude parameter over v in [0, 1]

@@ -819,6 +819,10 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
         F.push_back(q.partner);
       return F;
     };
+    std::vector<std::array<Double_interval, 2>> split_boxes;  // the projections of the arc's certified split points
+    for (const Locus_split_point& sp : L.split_points)
+      if (sp.arc == k)
+        split_boxes.push_back({Double_interval{sp.box[0][0], sp.box[0][1]}, Double_interval{sp.box[1][0], sp.box[1][1]}});
     auto attempt = [&](bool every_partner) {
       std::vector<std::vector<std::array<double, 2>>> fibres;
       for (std::size_t i = 0; i < e.polyline.size(); ++i) {
@@ -856,7 +860,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
         inserted += refine_arc(L.topology.edges[k], fibres, *D_double, model, o.polyline_tolerance,
                                o.max_refinement_points - inserted);
       }
-      return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget);
+      return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {
@@ -879,6 +883,10 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
       };
       for (std::size_t j = 0; j < S.partner.size(); ++j) {
         const std::size_t i = S.first + j;
+        if (es.phantom_proved[i]) {  // (a floating-point root next to a fold, where the exact partners are complex)
+          flush();
+          continue;
+        }
         Locus_point q = lift_point(e.polyline[i][0], e.polyline[i][1], &S.partner[j]);
         if (!q.genuine) {
           flush();
@@ -895,6 +903,11 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
       }
       flush();
     }
+    for (std::size_t i = 0; i < arc.points.size() && i < es.phantom_proved.size(); ++i)
+      if (es.phantom_proved[i] && !(arc.points[i].status_proved && arc.points[i].genuine)) {
+        arc.points[i].genuine = false;
+        arc.points[i].status_proved = true;
+      }
   }
 }
 

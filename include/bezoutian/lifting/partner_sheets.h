@@ -17,14 +17,17 @@
 //     coordinate, which holds the arc points over T (each K_j does).
 // A partner y of an arc point (t, g(t)), t in T, in the domain lies in some W_j by 2; (g(t), y) is then in W_j (by
 // 1, g(t) is in K_j's range), so y is sheet j's partner by uniqueness: the sheets are every partner over T.
-// A span without any sheet is proved empty by the strip exclusion (certified_lifting.h: exclude_strips). What is
-// not proved (a Jacobian too ill-conditioned, where two sheets meet; half-branches inside singular boxes) is
-// counted in Edge_sheets::undecided_fraction, never guessed.
+// A span without any sheet is proved empty by the strip exclusion (certified_lifting.h: exclude_strips). Where two
+// sheets meet and end (a fold: the partners become complex beyond it) the spans next to the fold are decided in
+// the fold chart, with the partner coordinate as parameter (partner_fold_proofs.h). What is not proved (a
+// Jacobian too ill-conditioned, where two sheets cross; half-branches inside singular boxes) is counted in
+// Edge_sheets::undecided_fraction, never guessed.
 #ifndef BEZOUTIAN_LIFTING_PARTNER_SHEETS_H
 #define BEZOUTIAN_LIFTING_PARTNER_SHEETS_H
 
 #include <bezoutian/lifting/certified_lifting.h>
 #include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/internal/partner_fold_proofs.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
 #include <bezoutian/topology/Curve_topology.h>
 
@@ -58,6 +61,9 @@ struct Edge_sheets {
   /// or with every sheet proved outside it, genuine with a sheet proved inside the domain over the whole span, else
   /// open
   double status_undecided_fraction = 1;
+  /// per polyline point: proved to have no partner in the domain (phantom) by a fold proof (prove_piece_folds);
+  /// floating-point sheet points there are not partners
+  std::vector<char> phantom_proved;
 };
 
 /// Whether the partner y of the point x puts both patch points in `domain` widened by `margin` on every side.
@@ -233,31 +239,6 @@ inline std::vector<Partner_sheet> chain_sheets(const std::vector<std::vector<std
   return kept;
 }
 
-/// The closed boxes covering `range` minus the interiors of `holes` (each difference of a box and a hole: at most
-/// four boxes, left, right, below and above the hole).
-inline std::vector<std::array<Double_interval, 2>> complement_cover(const std::array<Double_interval, 2>& range,
-                                                                    const std::vector<std::array<Double_interval, 2>>& holes) {
-  using D = Double_interval;
-  std::vector<std::array<D, 2>> cover{range};
-  for (const auto& h : holes) {
-    std::vector<std::array<D, 2>> next;
-    for (const auto& r : cover) {
-      const bool meets = r[0].lo < h[0].hi && h[0].lo < r[0].hi && r[1].lo < h[1].hi && h[1].lo < r[1].hi;
-      if (!meets) {
-        next.push_back(r);
-        continue;
-      }
-      if (r[0].lo < h[0].lo) next.push_back({D{r[0].lo, h[0].lo}, r[1]});
-      if (h[0].hi < r[0].hi) next.push_back({D{h[0].hi, r[0].hi}, r[1]});
-      const D mid{std::max(r[0].lo, h[0].lo), std::min(r[0].hi, h[0].hi)};
-      if (r[1].lo < h[1].lo) next.push_back({mid, D{r[1].lo, h[1].lo}});
-      if (h[1].hi < r[1].hi) next.push_back({mid, D{h[1].hi, r[1].hi}});
-    }
-    cover = std::move(next);
-  }
-  return cover;
-}
-
 /// The span proof of the header comment on T for the sheets `active` (with floating-point partners ya, yb at the
 /// span's ends, and the other coordinate oa, ob there): true if every sheet's zero curve is proved over T and
 /// every other partner in the domain is excluded; the sheets' partner enclosures over T go to `K`.
@@ -309,18 +290,105 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
   return no_genuine_partner(eq, box, domain, 1024, &cover);
 }
 
+/// The folds of the graph piece `pc` of the edge `e` (partner_fold_proofs.h): two sheets whose partners come
+/// together (to within 1e-3 of the domain's size) at a traced point f and are apart (16 times more) at a point
+/// before it, on the side where they run longer. The proof starts from the nearest such point (then up to two
+/// farther ones) and decides past f up to the first point where neither sheet is found (or the piece's end). What it
+/// proves is entered per point (sheet points genuine with the fold's partner box, points with no partner
+/// phantom) and per span (the undecided lengths are lowered to what the fold leaves open; the fold's own interval,
+/// a few ulps wide, is the fold point's, as a split point's box is).
+inline void prove_piece_folds(const Partner_equations& eq, const Parameter_box& domain, const Curve_topology_edge& e,
+                              const Curve_topology_piece& pc, Edge_sheets& out, std::vector<double>& span_undecided,
+                              std::vector<double>& span_open, Exclusion_budget& budget) {
+  using D = Double_interval;
+  const int axis = pc.graph_axis, other = 1 - axis;
+  if (axis < 0) return;
+  const double scale = std::max(CGAL::to_double(domain.u1 - domain.u0), CGAL::to_double(domain.v1 - domain.v0));
+  auto coord = [&](std::size_t i, int c) {
+    if (i == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
+    if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+    return D{e.polyline[i][c], e.polyline[i][c]};
+  };
+  auto present = [](const Partner_sheet& S, std::size_t i) { return S.first <= i && i <= S.last(); };
+  for (std::size_t a = 0; a < out.sheets.size(); ++a)
+    for (std::size_t b = a + 1; b < out.sheets.size(); ++b) {
+      const Partner_sheet &Sa = out.sheets[a], &Sb = out.sheets[b];
+      const std::size_t lo = std::max({Sa.first, Sb.first, pc.first}), hi = std::min({Sa.last(), Sb.last(), pc.last});
+      if (lo >= hi) continue;
+      auto dist = [&](std::size_t i) {
+        const auto &ya = Sa.partner[i - Sa.first], &yb = Sb.partner[i - Sb.first];
+        return std::fabs(ya[0] - yb[0]) + std::fabs(ya[1] - yb[1]);
+      };
+      std::size_t f = lo;
+      for (std::size_t i = lo; i <= hi; ++i)
+        if (dist(i) < dist(f)) f = i;
+      if (!(dist(f) <= 1e-3 * scale)) continue;
+      const long dir = f - lo >= hi - f ? -1 : 1;  // towards the side where the sheets are apart
+      // the far side: up to the first point without either sheet, or the piece's end
+      std::size_t far = f;
+      while (far != (dir < 0 ? pc.last : pc.first) && (present(Sa, far) || present(Sb, far))) far = std::size_t(long(far) - dir);
+      int attempts = 0;
+      for (long i0 = long(f) + dir; i0 >= long(lo) && i0 <= long(hi) && attempts < 3; i0 += dir) {
+        const std::size_t s = std::size_t(i0);
+        if (dist(s) < 16 * dist(f) || dist(s) <= 1e-9 * scale) continue;
+        ++attempts;
+        const Fold_proof fp = prove_partner_fold(eq, domain, pc.cell, axis, coord(s, axis).mid(), coord(s, other).mid(),
+                                                 Sa.partner[s - Sa.first], Sb.partner[s - Sb.first], coord(f, axis).mid(),
+                                                 coord(far, axis).mid(), budget);
+        if (!fp.proved) continue;
+        auto within = [](const D& x, const D& r) { return r.lo <= x.lo && x.hi <= r.hi; };
+        const std::size_t first = std::min(s, far), last = std::max(s, far);
+        for (std::size_t i = first; i <= last; ++i) {
+          const D t = coord(i, axis);
+          if (within(t, fp.phantom)) out.phantom_proved[i] = 1;
+          if (!within(t, fp.genuine)) continue;
+          for (Partner_sheet* S : {&out.sheets[a], &out.sheets[b]})
+            if (present(*S, i)) {
+              S->enclosure[i - S->first] = fp.partners;
+              S->genuine_proved[i - S->first] = 1;
+            }
+        }
+        std::vector<D> decided{fp.genuine, fp.fold, fp.phantom};
+        std::sort(decided.begin(), decided.end(), [](const D& x, const D& y) { return x.lo < y.lo; });
+        auto uncovered = [&](const D& T) {  // the length of T outside the decided ranges (0 exactly if covered)
+          double open = 0, at = T.lo;
+          for (const D& r : decided) {
+            if (!(r.lo <= r.hi)) continue;
+            if (r.lo > at) open += std::min(r.lo, T.hi) - at;
+            at = std::max(at, r.hi);
+            if (at >= T.hi) return open;
+          }
+          return open + (T.hi - at);
+        };
+        for (std::size_t i = first; i < last; ++i) {
+          const D ta = coord(i, axis), tb = coord(i + 1, axis);
+          const D T{std::min(ta.lo, tb.lo), std::max(ta.hi, tb.hi)};
+          const double open = uncovered(T);
+          span_undecided[i] = std::min(span_undecided[i], open);
+          span_open[i] = std::min(span_open[i], open);
+        }
+        break;
+      }
+    }
+}
+
 /// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
 /// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
-/// while unproved). Sheet points outside the domain are kept (the caller reports the genuine runs).
+/// while unproved, and towards a certified split point, whose graph intervals are `split_boxes`, while a sheet
+/// crosses the domain's side over it). Sheet points outside the domain are kept (the caller reports the genuine runs).
 inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                          const Curve_topology_edge& e,
                                          const std::vector<std::vector<std::array<double, 2>>>& fibres,
-                                         Exclusion_budget& budget) {
+                                         Exclusion_budget& budget,
+                                         const std::vector<std::array<Double_interval, 2>>& split_boxes = {}) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
   const std::size_t n = e.polyline.size();
+  out.phantom_proved.assign(n, 0);
   double total = 0, undecided = 0, status_open = 0;
+  // the undecided lengths of the spans (polyline points i, i + 1) of the graph pieces: fibre and status
+  std::vector<double> span_undecided(n, 0), span_open(n, 0);
   for (const Curve_topology_piece& pc : e.pieces) {
     if (pc.last >= n || pc.first >= pc.last) continue;
     if (pc.graph_axis < 0 || unbounded) {  // a half-branch inside a singular box: not proved here
@@ -337,6 +405,7 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       if (i == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
       return D{e.polyline[i][c], e.polyline[i][c]};
     };
+    const D cell_other = axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1);
     for (std::size_t i = pc.first; i < pc.last; ++i) {
       const D a = coord(i, axis), b = coord(i + 1, axis);
       const D T{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
@@ -355,14 +424,14 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         else broken = true;
       }
       if (broken) {
-        undecided += T.hi - T.lo;
-        status_open += T.hi - T.lo;
+        span_undecided[i] += T.hi - T.lo;
+        span_open[i] += T.hi - T.lo;
         continue;
       }
       if (active.empty()) {  // no partner at either end: the strip of the cell over T holds none either
         if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) {
-          undecided += T.hi - T.lo;
-          status_open += T.hi - T.lo;
+          span_undecided[i] += T.hi - T.lo;
+          span_open[i] += T.hi - T.lo;
         }
         continue;
       }
@@ -392,6 +461,8 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         }
         std::vector<std::array<D, 3>> K;
         if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget)) {
+          // (the arc points over Ts lie in the cell: their other coordinate in K_j's range and the cell's)
+          for (auto& k : K) k[0] = D{std::max(k[0].lo, cell_other.lo), std::min(k[0].hi, cell_other.hi)};
           // every partner in the domain is in some K_j: genuine if one K_j lies inside the domain, phantom if every
           // K_j lies outside it (then no partner is in the domain), else open
           bool genuine = false, outside = true;
@@ -400,7 +471,23 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
             genuine = genuine || st == Partner_status::genuine;
             outside = outside && st == Partner_status::outside;
           }
-          if (!genuine && !outside) status_open += std::fabs(t1 - t0);
+          if (!genuine && !outside) {
+            // a sheet crosses the domain's side over Ts: at a certified split point the part beyond its box is
+            // decided by halving towards it (the part inside the split's box is the split point's own)
+            bool inside_split = false, meets_split = false;
+            for (const auto& g : split_boxes) {
+              inside_split = inside_split || (g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi);
+              meets_split = meets_split || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
+            }
+            const double m = 0.5 * (sp.f0 + sp.f1);
+            if (!inside_split && meets_split && sp.depth < 64 && sp.f0 < m && m < sp.f1) {
+              todo.push_back({m, sp.f1, sp.depth + 1});
+              todo.push_back({sp.f0, m, sp.depth + 1});
+              continue;  // (the halves give the end points' enclosures)
+            } else if (!inside_split) {
+              span_open[i] += std::fabs(t1 - t0);
+            }
+          }
           for (int end = 0; end < 2; ++end) {  // the enclosures at the polyline points the part reaches
             if ((end == 0 ? sp.f0 : sp.f1) != end || ends_done[end]) continue;
             ends_done[end] = true;
@@ -420,11 +507,13 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           todo.push_back({sp.f0, m, sp.depth + 1});
           continue;
         }
-        undecided += std::fabs(t1 - t0);
-        status_open += std::fabs(t1 - t0);
+        span_undecided[i] += std::fabs(t1 - t0);
+        span_open[i] += std::fabs(t1 - t0);
       }
     }
+    prove_piece_folds(eq, domain, e, pc, out, span_undecided, span_open, budget);
   }
+  for (std::size_t i = 0; i < n; ++i) undecided += span_undecided[i], status_open += span_open[i];
   out.undecided_fraction = total > 0 ? std::min(1.0, undecided / total) : 1;
   out.status_undecided_fraction = total > 0 ? std::min(1.0, status_open / total) : 1;
   return out;

@@ -482,6 +482,31 @@ inline std::array<Double_interval, 2> tight_partner_enclosure(const Eq& eq, int 
   return {D{std::max(W[1].lo, y[0].lo), std::min(W[1].hi, y[0].hi)}, D{std::max(W[2].lo, y[1].lo), std::min(W[2].hi, y[1].hi)}};
 }
 
+/// The closed boxes covering `range` minus the interiors of `holes` (each difference of a box and a hole: at most
+/// four boxes, left, right, below and above the hole).
+inline std::vector<std::array<Double_interval, 2>> complement_cover(const std::array<Double_interval, 2>& range,
+                                                                    const std::vector<std::array<Double_interval, 2>>& holes) {
+  using D = Double_interval;
+  std::vector<std::array<D, 2>> cover{range};
+  for (const auto& h : holes) {
+    std::vector<std::array<D, 2>> next;
+    for (const auto& r : cover) {
+      const bool meets = r[0].lo < h[0].hi && h[0].lo < r[0].hi && r[1].lo < h[1].hi && h[1].lo < r[1].hi;
+      if (!meets) {
+        next.push_back(r);
+        continue;
+      }
+      if (r[0].lo < h[0].lo) next.push_back({D{r[0].lo, h[0].lo}, r[1]});
+      if (h[0].hi < r[0].hi) next.push_back({D{h[0].hi, r[0].hi}, r[1]});
+      const D mid{std::max(r[0].lo, h[0].lo), std::min(r[0].hi, h[0].hi)};
+      if (r[1].lo < h[1].lo) next.push_back({mid, D{r[1].lo, h[1].lo}});
+      if (h[1].hi < r[1].hi) next.push_back({mid, D{h[1].hi, r[1].hi}});
+    }
+    cover = std::move(next);
+  }
+  return cover;
+}
+
 }  // namespace internal
 }  // namespace bezoutian
 
