@@ -1561,8 +1561,19 @@ TEST_CASE("structured surfaces: two cylinders crossing, both branches over one p
   INFO(L.note);
   REQUIRE(L.topology_computed);
   std::size_t sheets = 0;
+  // the curve leaves both patches at x = y = 3/5, where the partner is the corner (v, s) = (1, 1): an exact split
+  // point at (u, t) = (4/5, 4/5) (lifting/partner_domain_corners.h)
+  std::size_t corner_splits = 0;
+  for (const auto& sp : L.split_points) {
+    const auto& q = L.arcs[sp.arc].points[sp.index];
+    corner_splits += std::fabs(q.projection[0] - 0.8) < 1e-15 && std::fabs(q.projection[1] - 0.8) < 1e-15 &&
+                     q.genuine && q.status_proved && std::fabs(q.partner[0] - 1) < 1e-12 &&
+                     std::fabs(q.partner[1] - 1) < 1e-12;
+  }
+  CHECK(corner_splits == 1);
   for (const auto& a : L.arcs) {
-    CHECK(a.fibre_undecided_fraction < 0.05);  // (the span at the corner, where the two branches meet)
+    CHECK(a.fibre_undecided_fraction < 1e-3);  // (the span at the box's corner, where the two branches meet)
+    CHECK(a.undecided_fraction < 1e-3);
     for (const auto& s : a.sheets) {
       ++sheets;
       for (const auto& q : s.points) {
@@ -1971,7 +1982,22 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   CHECK(L.equation.square_free.degree() == 1);
   // every partner proved found but next to x = +-1 (the sheets meet) and x = 0 (partners at the domain's corners):
   // the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined pairing
-  for (const auto& a : L.arcs) CHECK(a.fibre_undecided_fraction < 0.1);
+  // the partner touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact point,
+  // proved genuine (lifting/partner_domain_corners.h), and the statuses beside it proved
+  bool touch = false;
+  for (const auto& a : L.arcs) {
+    CHECK(a.fibre_undecided_fraction < 1e-3);  // (the spans where the sheets meet at the box's corners)
+    CHECK(a.undecided_fraction < 1e-3);
+    for (const auto& q : a.points)
+      if (q.projection[0] == 0.5 && q.projection[1] == 0.5) {
+        touch = true;
+        CHECK(q.genuine);
+        CHECK(q.status_proved);
+        CHECK(std::fabs(q.partner[0] - 1) < 1e-12);
+        CHECK(std::fabs(q.partner[1] - 1) < 1e-12);
+      }
+  }
+  CHECK(touch);
   std::size_t sheets = 0;
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets) {

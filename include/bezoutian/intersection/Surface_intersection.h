@@ -27,6 +27,7 @@
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/floating_null_vector.h>
 #include <bezoutian/topology/matrix_zero_points.h>
+#include <bezoutian/lifting/partner_domain_corners.h>
 #include <bezoutian/lifting/partner_domain_crossings.h>
 #include <bezoutian/lifting/arc_refinement.h>
 #include <bezoutian/lifting/partner_sheets.h>
@@ -676,6 +677,79 @@ inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_e
 // between consecutive traced points whose floating-point statuses differ, the crossing of a side of the partner
 // domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
 // the pieces' index ranges shifted) and a Locus_split_point.
+// Arc points whose partner lies exactly on the partner domain's boundary where the crossing test cannot decide (a
+// corner, a touch; lifting/partner_domain_corners.h): genuine, proved. One between two traced points becomes a
+// traced point (and a polyline point); where the floating-point statuses on its two sides differ the genuine part
+// ends there, and it is a Locus_split_point.
+template <class Lift>
+void insert_corner_points(Surface_locus& L, std::size_t k, const Partner_equations& eq,
+                          const Surface_intersection_options& o, Lift lift_point) {
+  Locus_arc& arc = L.arcs[k];
+  Curve_topology_edge& e = L.topology.edges[k];
+  auto exact_box = [](const Rational& q) {
+    const Double_interval d = Double_interval::of(q);
+    return std::array<double, 2>{d.lo, d.hi};
+  };
+  std::vector<std::array<Rational, 2>> seen;
+  for (std::size_t i = 0; i < arc.points.size(); ++i) {
+    const Locus_point& p = arc.points[i];
+    if (!verified(p)) continue;
+    const auto c = exact_boundary_point(eq, o.partner_domain, p.projection, p.partner);
+    if (!c || std::find(seen.begin(), seen.end(), c->x) != seen.end()) continue;
+    bool known = false;  // a certified split point already holds it
+    for (const Locus_split_point& sp : L.split_points)
+      known = known || (sp.arc == k && Rational(sp.box[0][0]) <= c->x[0] && c->x[0] <= Rational(sp.box[0][1]) &&
+                        Rational(sp.box[1][0]) <= c->x[1] && c->x[1] <= Rational(sp.box[1][1]));
+    if (known) continue;
+    const Curve_topology_piece* pc = nullptr;
+    for (const auto& x : e.pieces)
+      if (x.graph_axis >= 0 && x.first <= i && i <= x.last && x.cell.u0 <= c->x[0] && c->x[0] <= x.cell.u1 &&
+          x.cell.v0 <= c->x[1] && c->x[1] <= x.cell.v1)
+        pc = &x;
+    if (!pc) continue;  // (the point of D = 0 in the cell, where D = 0 is a graph, is the arc's)
+    const int axis = pc->graph_axis;
+    const Rational t = c->x[std::size_t(axis)];
+    auto at = [&](std::size_t j) { return Rational(e.polyline[j][std::size_t(axis)]); };
+    // the traced point itself, or a new point after `where`
+    const bool at_point = at(i) == t && Rational(e.polyline[i][std::size_t(1 - axis)]) == c->x[std::size_t(1 - axis)];
+    const bool after = !at_point && i < pc->last && (at(i) - t) * (at(i + 1) - t) < 0;
+    const bool before = !at_point && !after && i > pc->first && (at(i - 1) - t) * (at(i) - t) < 0;
+    if (!at_point && !after && !before) continue;
+    seen.push_back(c->x);
+    const bool insert = !at_point;
+    const std::size_t where = before ? i - 1 : i;
+    const std::array<double, 2> y{CGAL::to_double(c->y[0]), CGAL::to_double(c->y[1])};
+    Locus_point q = lift_point(CGAL::to_double(c->x[0]), CGAL::to_double(c->x[1]), &y);
+    q.genuine = q.status_proved = true;
+    q.partner_enclosure = {exact_box(c->y[0]), exact_box(c->y[1])};
+    if (!insert) {
+      arc.points[i] = q;
+      continue;
+    }
+    const bool ends_genuine_part = arc.points[where].genuine != arc.points[where + 1].genuine;
+    arc.points.insert(arc.points.begin() + std::ptrdiff_t(where + 1), q);
+    e.polyline.insert(e.polyline.begin() + std::ptrdiff_t(where + 1), q.projection);
+    for (auto& x : e.pieces) {
+      if (x.first > where) ++x.first;
+      if (x.last > where) ++x.last;
+    }
+    for (Locus_split_point& sp : L.split_points)
+      if (sp.arc == k && sp.index > where) ++sp.index;
+    if (ends_genuine_part) {
+      Locus_split_point sp;
+      sp.arc = k;
+      sp.index = where + 1;
+      const bool on_v = c->y[0] == o.partner_domain.v0 || c->y[0] == o.partner_domain.v1;
+      sp.point = on_v ? 0 : 1;  // P = (u, v) reaches a side v = const, or Q = (s, t) a side s = const
+      sp.coordinate = on_v ? 1 : 0;
+      sp.bound = on_v ? c->y[0] : c->y[1];
+      sp.box = {exact_box(c->x[0]), exact_box(c->x[1]), exact_box(c->y[0]), exact_box(c->y[1])};
+      L.split_points.push_back(sp);
+    }
+    ++i;  // (the inserted point)
+  }
+}
+
 template <class Lift>
 void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
                          Lift lift_point) {
@@ -723,6 +797,7 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
       for (int d = 0; d < 4; ++d) sp.box[d] = {c.box[d].lo, c.box[d].hi};
       L.split_points.push_back(sp);
     }
+    insert_corner_points(L, k, eq, o, lift_point);
   }
 }
 
@@ -819,10 +894,23 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
         F.push_back(q.partner);
       return F;
     };
-    std::vector<std::array<Double_interval, 2>> split_boxes;  // the projections of the arc's certified split points
+    // the projections of the arc's certified split points, and of its points whose partner lies exactly on the
+    // partner domain's boundary (a few ulps wide: the halving towards them ends inside)
+    std::vector<std::array<Double_interval, 2>> split_boxes;
     for (const Locus_split_point& sp : L.split_points)
       if (sp.arc == k)
         split_boxes.push_back({Double_interval{sp.box[0][0], sp.box[0][1]}, Double_interval{sp.box[1][0], sp.box[1][1]}});
+    for (const Locus_point& q : arc.points)
+      if (q.status_proved && q.genuine && verified(q))
+        if (const auto c = exact_boundary_point(eq, o.partner_domain, q.projection, q.partner)) {
+          std::array<Double_interval, 2> b;
+          for (int d = 0; d < 2; ++d) {
+            const Double_interval x = Double_interval::of(c->x[std::size_t(d)]);
+            const double r = 4 * std::numeric_limits<double>::epsilon() * (std::fabs(x.lo) + std::fabs(x.hi));
+            b[std::size_t(d)] = Double_interval{x.lo - r, x.hi + r};
+          }
+          split_boxes.push_back(b);
+        }
     auto attempt = [&](bool every_partner) {
       std::vector<std::vector<std::array<double, 2>>> fibres;
       for (std::size_t i = 0; i < e.polyline.size(); ++i) {

@@ -313,6 +313,28 @@ class Partner_equations {
   }
 
  public:
+  /// E at a rational point z, exactly, and the weights A_0(P), B_0(Q) there in `weights`.
+  std::array<Rational, 3> exact_values(const std::array<Rational, 4>& z, std::array<Rational, 2>& weights) const {
+    std::array<Rational, 2> P, Q;
+    points(z, P, Q);
+    auto value = [](const std::vector<std::vector<Rational>>& c, const std::array<Rational, 2>& x) {
+      Rational r(0);
+      for (std::size_t j = c.size(); j-- > 0;) {
+        Rational row(0);
+        for (std::size_t i = c[j].size(); i-- > 0;) row = row * x[0] + c[j][i];
+        r = r * x[1] + row;
+      }
+      return r;
+    };
+    std::array<Rational, 4> a, b;
+    for (int k = 0; k < 4; ++k) {
+      a[std::size_t(k)] = value(A_[std::size_t(k)].f, P);
+      b[std::size_t(k)] = value(B_[std::size_t(k)].f, Q);
+    }
+    weights = {a[0], b[0]};
+    return {a[1] * b[0] - b[1] * a[0], a[2] * b[0] - b[2] * a[0], a[3] * b[0] - b[3] * a[0]};
+  }
+
   /// The weights A_0(P), B_0(Q) over the real box z (outward-rounded double interval arithmetic).
   std::array<Double_interval, 2> weights(const std::array<Double_interval, 4>& z) const {
     std::array<Double_interval, 2> P, Q;

@@ -374,8 +374,9 @@ inline void prove_piece_folds(const Partner_equations& eq, const Parameter_box& 
 
 /// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
 /// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
-/// while unproved, and towards a certified split point, whose graph intervals are `split_boxes`, while a sheet
-/// crosses the domain's side over it). Sheet points outside the domain are kept (the caller reports the genuine runs).
+/// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
+/// split point, whose graph intervals are `split_boxes`, while a sheet crosses the domain's side over it). Sheet points
+/// outside the domain are kept (the caller reports the genuine runs).
 inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                          const Curve_topology_edge& e,
                                          const std::vector<std::vector<std::array<double, 2>>>& fibres,
@@ -472,15 +473,15 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
             outside = outside && st == Partner_status::outside;
           }
           if (!genuine && !outside) {
-            // a sheet crosses the domain's side over Ts: at a certified split point the part beyond its box is
-            // decided by halving towards it (the part inside the split's box is the split point's own)
+            // a sheet crosses the domain's side over Ts, or its enclosure reaches over it: halved up to six times,
+            // and at a certified split point until the open part lies inside the split's box (the split point's own)
             bool inside_split = false, meets_split = false;
             for (const auto& g : split_boxes) {
               inside_split = inside_split || (g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi);
               meets_split = meets_split || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
             }
             const double m = 0.5 * (sp.f0 + sp.f1);
-            if (!inside_split && meets_split && sp.depth < 64 && sp.f0 < m && m < sp.f1) {
+            if (!inside_split && sp.depth < (meets_split ? 64 : 6) && sp.f0 < m && m < sp.f1) {
               todo.push_back({m, sp.f1, sp.depth + 1});
               todo.push_back({sp.f0, m, sp.depth + 1});
               continue;  // (the halves give the end points' enclosures)
