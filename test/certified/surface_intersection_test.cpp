@@ -1562,7 +1562,7 @@ TEST_CASE("structured surfaces: two cylinders crossing, both branches over one p
   REQUIRE(L.topology_computed);
   std::size_t sheets = 0;
   // the curve leaves both patches at x = y = 3/5, where the partner is the corner (v, s) = (1, 1): an exact split
-  // point at (u, t) = (4/5, 4/5) (lifting/partner_domain_corners.h)
+  // point at (u, t) = (4/5, 4/5) (lifting/partner_boundary_points.h)
   std::size_t corner_splits = 0;
   for (const auto& sp : L.split_points) {
     const auto& q = L.arcs[sp.arc].points[sp.index];
@@ -1983,7 +1983,7 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   // every partner proved found but next to x = +-1 (the sheets meet) and x = 0 (partners at the domain's corners):
   // the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined pairing
   // the partner touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact point,
-  // proved genuine (lifting/partner_domain_corners.h), and the statuses beside it proved
+  // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved
   bool touch = false;
   for (const auto& a : L.arcs) {
     CHECK(a.fibre_undecided_fraction < 1e-3);  // (the spans where the sheets meet at the box's corners)
@@ -2039,6 +2039,21 @@ TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal m
   CHECK(L.equation.route == Implicit_equation::Route::maximal_minors);
   CHECK(L.equation.generic_rank == 1);  // B is 2 x 2 with a one-dimensional kernel everywhere
   CHECK(L.equation.square_free.degree() == 1);  // D = u - t
+  // at x = 0 (u = t = 1/2) the partner (v, s) = (1/4, 0) touches the side s = 0 (y = 0, z = -1/2): an exact point,
+  // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved
+  bool touch = false;
+  for (const auto& a : L.arcs) {
+    CHECK(a.undecided_fraction < 1e-3);
+    for (const auto& q : a.points)
+      if (q.projection[0] == 0.5 && q.projection[1] == 0.5) {
+        touch = true;
+        CHECK(q.genuine);
+        CHECK(q.status_proved);
+        CHECK(std::fabs(q.partner[0] - 0.25) < 1e-12);
+        CHECK(std::fabs(q.partner[1]) < 1e-12);
+      }
+  }
+  CHECK(touch);
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets)
       for (const auto& q : s.points) {  // on both closed-form surfaces

@@ -27,7 +27,7 @@
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/floating_null_vector.h>
 #include <bezoutian/topology/matrix_zero_points.h>
-#include <bezoutian/lifting/partner_domain_corners.h>
+#include <bezoutian/lifting/partner_boundary_points.h>
 #include <bezoutian/lifting/partner_domain_crossings.h>
 #include <bezoutian/lifting/arc_refinement.h>
 #include <bezoutian/lifting/partner_sheets.h>
@@ -678,11 +678,11 @@ inline std::array<std::array<Rational, 2>, 4> refine_split_point(const Partner_e
 // domain is isolated and, if proved, becomes a traced point (and a polyline point of the topology's edge, with
 // the pieces' index ranges shifted) and a Locus_split_point.
 // Arc points whose partner lies exactly on the partner domain's boundary where the crossing test cannot decide (a
-// corner, a touch; lifting/partner_domain_corners.h): genuine, proved. One between two traced points becomes a
+// corner, a touch; lifting/partner_boundary_points.h): genuine, proved. One between two traced points becomes a
 // traced point (and a polyline point); where the floating-point statuses on its two sides differ the genuine part
 // ends there, and it is a Locus_split_point.
 template <class Lift>
-void insert_corner_points(Surface_locus& L, std::size_t k, const Partner_equations& eq,
+void insert_boundary_points(Surface_locus& L, std::size_t k, const Partner_equations& eq,
                           const Surface_intersection_options& o, Lift lift_point) {
   Locus_arc& arc = L.arcs[k];
   Curve_topology_edge& e = L.topology.edges[k];
@@ -797,7 +797,7 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
       for (int d = 0; d < 4; ++d) sp.box[d] = {c.box[d].lo, c.box[d].hi};
       L.split_points.push_back(sp);
     }
-    insert_corner_points(L, k, eq, o, lift_point);
+    insert_boundary_points(L, k, eq, o, lift_point);
   }
 }
 
@@ -900,8 +900,12 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
     for (const Locus_split_point& sp : L.split_points)
       if (sp.arc == k)
         split_boxes.push_back({Double_interval{sp.box[0][0], sp.box[0][1]}, Double_interval{sp.box[1][0], sp.box[1][1]}});
+    // (insert_boundary_points gave them the partner boxes of exact rationals, an ulp wide at most)
+    auto ulp_wide = [](const std::array<double, 2>& b) {
+      return b[1] - b[0] <= 2 * std::numeric_limits<double>::epsilon() * (std::fabs(b[0]) + std::fabs(b[1]));
+    };
     for (const Locus_point& q : arc.points)
-      if (q.status_proved && q.genuine && verified(q))
+      if (q.status_proved && q.genuine && verified(q) && ulp_wide(q.partner_enclosure[0]) && ulp_wide(q.partner_enclosure[1]))
         if (const auto c = exact_boundary_point(eq, o.partner_domain, q.projection, q.partner)) {
           std::array<Double_interval, 2> b;
           for (int d = 0; d < 2; ++d) {

@@ -6,8 +6,8 @@
 // floating-point point is polished by damped Gauss-Newton on the three partner equations with the partner's
 // coordinates near a side fixed on it, replaced by the simplest rationals next to it, and kept only if E vanishes
 // there exactly with nonzero weights (a point of D = 0 with a partner in the closed domain: genuine, proved).
-#ifndef BEZOUTIAN_LIFTING_PARTNER_DOMAIN_CORNERS_H
-#define BEZOUTIAN_LIFTING_PARTNER_DOMAIN_CORNERS_H
+#ifndef BEZOUTIAN_LIFTING_PARTNER_BOUNDARY_POINTS_H
+#define BEZOUTIAN_LIFTING_PARTNER_BOUNDARY_POINTS_H
 
 #include <bezoutian/arithmetic/simplest_rational.h>
 #include <bezoutian/lifting/double_partner_witness.h>
@@ -121,4 +121,4 @@ inline std::optional<Partner_boundary_point> exact_boundary_point(const Partner_
 }  // namespace internal
 }  // namespace bezoutian
 
-#endif  // BEZOUTIAN_LIFTING_PARTNER_DOMAIN_CORNERS_H
+#endif  // BEZOUTIAN_LIFTING_PARTNER_BOUNDARY_POINTS_H
