@@ -1966,6 +1966,24 @@ TEST_CASE("tangential contacts along a curve: a plane along a cylinder's boundar
   }
 }
 
+namespace {
+// The traced point at (u, t) = (1/2, 1/2), where the closed form puts the partner (v, s) on the partner domain's
+// boundary: present, genuine, proved, with that partner.
+void check_exact_touch_at_centre(const Surface_locus& L, double v, double s) {
+  bool found = false;
+  for (const auto& a : L.arcs)
+    for (const auto& q : a.points)
+      if (q.projection[0] == 0.5 && q.projection[1] == 0.5) {
+        found = true;
+        CHECK(q.genuine);
+        CHECK(q.status_proved);
+        CHECK(std::fabs(q.partner[0] - v) < 1e-12);
+        CHECK(std::fabs(q.partner[1] - s) < 1e-12);
+      }
+  CHECK(found);
+}
+}  // namespace
+
 TEST_CASE("orthogonal extrusions: two branches over one projected line, both lifted", "[surface][structured][sheets]") {
   // Phi = (x, x^2, z) with x = 2u - 1, z = 2v - 1 (y = x^2 extruded along z); Psi = (x, 1 - z^2, z) with
   // x = 2t - 1, z = 2s - 1 (y = 1 - z^2 extruded along x). The curve: x in [-1, 1], y = x^2, z = +-sqrt(1 - x^2):
@@ -1980,24 +1998,15 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   REQUIRE(L.topology_computed);
   // D = u - t: every point of the line, and nothing else
   CHECK(L.equation.square_free.degree() == 1);
-  // every partner proved found but next to x = +-1 (the sheets meet) and x = 0 (partners at the domain's corners):
-  // the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined pairing
-  // the partner touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact point,
-  // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved
-  bool touch = false;
+  // every partner proved found but next to x = +-1, where the sheets meet at the box's corners (the coordinate
+  // equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined pairing); the partner
+  // touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact point, proved genuine
+  // (lifting/partner_boundary_points.h), and the statuses beside it proved
   for (const auto& a : L.arcs) {
-    CHECK(a.fibre_undecided_fraction < 1e-3);  // (the spans where the sheets meet at the box's corners)
+    CHECK(a.fibre_undecided_fraction < 1e-3);
     CHECK(a.undecided_fraction < 1e-3);
-    for (const auto& q : a.points)
-      if (q.projection[0] == 0.5 && q.projection[1] == 0.5) {
-        touch = true;
-        CHECK(q.genuine);
-        CHECK(q.status_proved);
-        CHECK(std::fabs(q.partner[0] - 1) < 1e-12);
-        CHECK(std::fabs(q.partner[1] - 1) < 1e-12);
-      }
   }
-  CHECK(touch);
+  check_exact_touch_at_centre(L, 1, 1);
   std::size_t sheets = 0;
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets) {
@@ -2041,19 +2050,8 @@ TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal m
   CHECK(L.equation.square_free.degree() == 1);  // D = u - t
   // at x = 0 (u = t = 1/2) the partner (v, s) = (1/4, 0) touches the side s = 0 (y = 0, z = -1/2): an exact point,
   // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved
-  bool touch = false;
-  for (const auto& a : L.arcs) {
-    CHECK(a.undecided_fraction < 1e-3);
-    for (const auto& q : a.points)
-      if (q.projection[0] == 0.5 && q.projection[1] == 0.5) {
-        touch = true;
-        CHECK(q.genuine);
-        CHECK(q.status_proved);
-        CHECK(std::fabs(q.partner[0] - 0.25) < 1e-12);
-        CHECK(std::fabs(q.partner[1]) < 1e-12);
-      }
-  }
-  CHECK(touch);
+  for (const auto& a : L.arcs) CHECK(a.undecided_fraction < 1e-3);
+  check_exact_touch_at_centre(L, 0.25, 0);
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets)
       for (const auto& q : s.points) {  // on both closed-form surfaces
