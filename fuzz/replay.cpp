@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
   const Target targets[] = {{"json", bezoutian::fuzz::json_document},
                             {"expression", bezoutian::fuzz::polynomial_expression},
                             {"dat", bezoutian::fuzz::cgal_dat},
-                            {"bpt", bezoutian::fuzz::bpt}};
+                            {"bpt", bezoutian::fuzz::bpt},
+                            {"curves", bezoutian::fuzz::planar_curves}};
   int status = 0;
   for (const Target& t : targets) {
     const std::size_t corpus = replay_folder(root / "corpus" / t.name, t);
