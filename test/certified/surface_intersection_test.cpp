@@ -2109,3 +2109,56 @@ TEST_CASE("Viviani: a sphere and a cylinder; the cylinder's sides on D = 0 are p
         CHECK(std::fabs((p[0] - 0.5) * (p[0] - 0.5) + p[1] * p[1] - 0.25) < 1e-9);
       }
 }
+
+TEST_CASE("Viviani: both branches through the tangent point are complete, the fibre proved along the half-branches",
+          "[surface][structured][sheets]") {
+  // The sphere and cylinder of the test above meet along Viviani's curve (cos^2 h, sin h cos h, +-sin h),
+  // |h| <= atan(1/2): two branches crossing at the tangent point (1, 0, 0), the node (u, v) = (1/2, 1/2) of D = 0
+  // (sphere: u = tan(h/2) + 1/2, v = +-tan(h/2) + 1/2; cylinder: u = tan h + 1/2, v = (1 +- sin h)/2).
+  const std::string a = "((2*u-1)/2)", b = "((2*v-1)/2)";
+  const Patch sphere = bezoutian_test::rational_patch_from_power(
+      {"(1-" + a + "^2)*(1-" + b + "^2)", "2*" + a + "*(1-" + b + "^2)", "2*" + b + "*(1+" + a + "^2)",
+       "(1+" + a + "^2)*(1+" + b + "^2)"}, 2, 2);
+  const Patch cylinder = bezoutian_test::rational_patch_from_power({"1", a, "(2*v-1)*(1+" + a + "^2)", "1+" + a + "^2"}, 2, 1);
+  Surface_intersection_options fine;
+  fine.polyline_tolerance = 1e-3;
+  const Surface_locus L = intersection_locus(sphere, cylinder, fine);
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  std::size_t nodes = 0;
+  for (const auto& v : L.topology.vertices)
+    if (v.kind == Curve_topology_vertex::singular) {
+      ++nodes;
+      CHECK(v.u_lo <= 0.5);
+      CHECK(0.5 <= v.u_hi);
+      CHECK(v.v_lo <= 0.5);
+      CHECK(0.5 <= v.v_hi);
+    }
+  CHECK(nodes == 1);
+  CHECK(L.arcs.size() == 4);
+  for (const auto& arc : L.arcs) {
+    // every partner is proved but next to the node, where the chain of Krawczyk boxes along each half-branch stops
+    // (the half-branches run through the node's box, a quarter of the domain wide)
+    CHECK(arc.fibre_undecided_fraction < 0.15);
+    CHECK(arc.undecided_fraction < 0.1);
+    for (const auto& s : arc.sheets)
+      for (const auto& q : s.points) {
+        const auto& p = q.point_3d;
+        CHECK(std::fabs(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - 1) < 1e-9);
+        CHECK(std::fabs((p[0] - 0.5) * (p[0] - 0.5) + p[1] * p[1] - 0.25) < 1e-9);
+      }
+  }
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  const double h_max = std::atan(0.5);
+  for (int k = 0; k <= 2000; ++k)
+    for (int sign : {-1, 1}) {
+      const double h = -h_max + 2 * h_max * k / 2000, c = std::cos(h), s = std::sin(h);
+      samples.push_back({std::array<double, 3>{std::tan(h / 2) + 0.5, sign * std::tan(h / 2) + 0.5, 0},
+                         std::array<double, 3>{c * c, s * c, sign * s},
+                         std::array<double, 3>{std::tan(h) + 0.5, (1 + sign * s) / 2, 0}});
+    }
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < 5e-3);  // sphere (u, v)
+  CHECK(gap[1] < 5e-3);  // 3D
+  CHECK(gap[2] < 5e-3);  // cylinder (u, v)
+}

@@ -805,7 +805,8 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
 // starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
 template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
-                     Lift lift_point, const Rational_bezier_patch<Rational>* self_patch = nullptr) {
+                     Lift lift_point, const Rational_bezier_patch<Rational>* self_patch = nullptr,
+                     Half_branch_chains* chains = nullptr) {
   if (L.topology_method != "subdivision" || !o.certify_lifting) return;
   // self-intersection: the partner equations divided by the trivial partner, for spans near pinch points
   std::vector<Blown_up_partner_equations> blown_up;
@@ -843,7 +844,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
     const Edge_partner_certificate c =
         certify_edge_partners(eq, o.partner_domain, o.partner_domain_unbounded, L.topology.edges[k], partner, known,
                               float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up,
-                              kernel_usable ? &kernel : nullptr);
+                              kernel_usable ? &kernel : nullptr, chains);
     arc.undecided_fraction = c.undecided_fraction;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided && !split[i]) {
@@ -867,7 +868,8 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
 // nothing undecided) has no sheet, proved. A traced point that the kernel lifted to a partner outside the domain
 // while a sheet has one inside is replaced by the sheet's point (it is genuine).
 template <class Lift>
-void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o, Lift lift_point) {
+void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o, Lift lift_point,
+                 const Half_branch_chains* chains = nullptr) {
   if (L.topology_method != "subdivision" || !o.complete_lifting) return;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
@@ -952,7 +954,8 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
         inserted += refine_arc(L.topology.edges[k], fibres, *D_double, model, o.polyline_tolerance,
                                o.max_refinement_points - inserted);
       }
-      return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes);
+      return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes,
+                                   chains);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {
@@ -1241,8 +1244,9 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
-  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch);
-  internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point);
+  internal::Half_branch_chains chains;  // (the half-branches' proved spans, from the status to the fibre proof)
+  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
+  internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
@@ -1427,8 +1431,9 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
-  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point);
-  internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::Half_branch_chains chains;  // (the half-branches' proved spans, from the status to the fibre proof)
+  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
+  internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   if (!o.partner_domain_unbounded)
     for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)

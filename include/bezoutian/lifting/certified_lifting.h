@@ -22,6 +22,7 @@
 
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
+#include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/internal/kernel_partner_proofs.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
@@ -193,7 +194,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
                                   const Curve_topology_edge& e, const Curve_topology_piece& pc,
                                   const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
                                   const std::vector<bool>& float_genuine, Exclusion_budget& budget,
-                                  Edge_partner_certificate& out);
+                                  Edge_partner_certificate& out, Half_branch_chains* chains);
 
 /// The state the three phases of certify_edge_partners share on one graph piece (graph_axis 0 or 1) of an edge:
 /// its inputs, the certificate being filled, the edge's total and undecided lengths, and the partner cover of the
@@ -523,7 +524,8 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                                                       int max_halvings = 6,
                                                       const std::vector<const Partner_domain_crossing*>& splits = {},
                                                       const std::vector<Blown_up_partner_equations>* blown_up = nullptr,
-                                                      const Kernel_partner_system* kernel = nullptr) {
+                                                      const Kernel_partner_system* kernel = nullptr,
+                                                      Half_branch_chains* chains = nullptr) {
   using D = Double_interval;
   Edge_partner_certificate out;
   const std::size_t n = e.polyline.size();
@@ -539,7 +541,7 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
                          std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
       total += len;
       undecided += len * certify_half_branch(eq, domain, unbounded, e, pc, partner, partner_known,
-                                                   float_genuine, budget, out);
+                                                   float_genuine, budget, out, unbounded ? nullptr : chains);
       continue;
     }
     Graph_piece_certifier piece(eq, domain, unbounded, e, pc, partner, partner_known, float_genuine, budget, splits,
@@ -556,7 +558,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
                                   const Curve_topology_edge& e, const Curve_topology_piece& pc,
                                   const std::vector<std::array<double, 2>>& partner, const std::vector<bool>& known,
                                   const std::vector<bool>& float_genuine, Exclusion_budget& budget,
-                                  Edge_partner_certificate& out) {
+                                  Edge_partner_certificate& out, Half_branch_chains* chains) {
   using D = Double_interval;
   if (pc.singular_end < 0 || pc.last >= e.polyline.size()) return 1;
   const int axis = pc.crossing_on_vertical_line ? 0 : 1;
@@ -585,6 +587,30 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
   };
   std::vector<Span> todo;  // processed from the back
   for (std::size_t j = m - 2; j-- > 0;) todo.push_back({D{}, j, 0});
+  // the spans whose fibre is proved too (half_branch_chains.h), for the complete lifting
+  Half_branch_chain* record = chains ? &chains->add(pc) : nullptr;
+  if (record) {
+    record->axis = axis;
+    record->t_crossing = tc.mid();
+    record->t_end = e.polyline[idx[m - 1]][axis];
+  }
+  auto record_fibre = [&](const D& T, const std::array<D, 3>& W, const std::array<D, 3>& K, Partner_status st) {
+    if (!record) return;
+    if (st == Partner_status::phantom) {  // (status_from_partner excluded every partner of T x K_other)
+      record->spans.push_back({T, {W[1], W[2]}, 0});
+      return;
+    }
+    const D X1 = axis == 0 ? T : K[0], X2 = axis == 0 ? K[0] : T;
+    const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
+    std::array<D, 2> range;  // (the partner range of no_genuine_partner)
+    if (eq.self_intersection())
+      range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
+    else
+      range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
+    const std::vector<std::array<D, 2>> cover = complement_cover(range, {{W[1], W[2]}});
+    if (budget.take() && no_genuine_partner(eq, box, domain, 1024, &cover))
+      record->spans.push_back({T, {W[1], W[2]}, st == Partner_status::genuine ? 1 : 0});
+  };
   bool first = true;
   double t_done = tc.mid();
   while (!todo.empty()) {
@@ -629,6 +655,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       continue;
     }
     first = false;
+    record_fibre(T, W, K, st);
     W_prev = W;
     t_done = dir > 0 ? T.hi : T.lo;
     const bool span_end = dir > 0 ? T.hi >= b0.hi : T.lo <= b0.lo;  // reached traced point j + 1
@@ -653,6 +680,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     if ((dir > 0 ? T.hi : -T.lo) <= (dir > 0 ? t_done : -t_done)) continue;  // proved by the chain
     if (float_genuine[idx[j]] || float_genuine[idx[j + 1]]) break;
     if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) break;
+    if (record) record->spans.push_back({T, {}, 0});  // (no partner in the domain over the strip)
     for (std::size_t k : {j, j + 1})
       if (out.point_status[idx[k]] == Partner_status::undecided) out.point_status[idx[k]] = Partner_status::phantom;
     covered = std::max(covered, std::fabs((dir > 0 ? T.hi : T.lo) - tc.mid()));

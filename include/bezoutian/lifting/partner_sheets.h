@@ -27,6 +27,7 @@
 
 #include <bezoutian/lifting/certified_lifting.h>
 #include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/internal/partner_fold_proofs.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
 #include <bezoutian/topology/Curve_topology.h>
@@ -377,11 +378,42 @@ inline void prove_piece_folds(const Partner_equations& eq, const Parameter_box& 
 /// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
 /// split point, whose graph intervals are `split_boxes`, while a sheet crosses the domain's side over it). Sheet points
 /// outside the domain are kept (the caller reports the genuine runs).
+/// The share of a half-branch piece (by its coordinate t) whose fibre the chain proved (half_branch_chains.h):
+/// the spans with that proof whose traced points carry as many sheets in the domain as the span has partners
+/// (one, following a partner in the span's box, or none).
+inline double half_branch_fibre_share(const Partner_equations& eq, const Parameter_box& domain,
+                                      const Curve_topology_edge& e, const Curve_topology_piece& pc,
+                                      const Half_branch_chain& chain, const std::vector<Partner_sheet>& sheets) {
+  const double full = std::fabs(chain.t_end - chain.t_crossing);
+  if (!(full > 0)) return 0;
+  const double lo = std::min(chain.t_crossing, chain.t_end), hi = std::max(chain.t_crossing, chain.t_end);
+  double proved = 0;
+  for (const Half_branch_span& sp : chain.spans) {
+    bool ok = true;
+    for (std::size_t i = pc.first; i <= pc.last && ok; ++i) {
+      const double t = e.polyline[i][chain.axis];
+      if (t < sp.T.lo || t > sp.T.hi) continue;
+      int count = 0;
+      for (const Partner_sheet& S : sheets) {
+        if (i < S.first || i > S.last()) continue;
+        const auto& y = S.partner[i - S.first];
+        if (!partner_in_domain(eq, domain, false, e.polyline[i], y, 1e-6)) continue;
+        ++count;
+        ok = ok && sp.partners == 1 && sp.Y[0].lo <= y[0] && y[0] <= sp.Y[0].hi && sp.Y[1].lo <= y[1] && y[1] <= sp.Y[1].hi;
+      }
+      ok = ok && count == sp.partners;
+    }
+    if (ok) proved += std::max(0.0, std::min(sp.T.hi, hi) - std::max(sp.T.lo, lo));
+  }
+  return std::min(1.0, proved / full);
+}
+
 inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                          const Curve_topology_edge& e,
                                          const std::vector<std::vector<std::array<double, 2>>>& fibres,
                                          Exclusion_budget& budget,
-                                         const std::vector<std::array<Double_interval, 2>>& split_boxes = {}) {
+                                         const std::vector<std::array<Double_interval, 2>>& split_boxes = {},
+                                         const Half_branch_chains* chains = nullptr) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
@@ -392,12 +424,13 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
   std::vector<double> span_undecided(n, 0), span_open(n, 0);
   for (const Curve_topology_piece& pc : e.pieces) {
     if (pc.last >= n || pc.first >= pc.last) continue;
-    if (pc.graph_axis < 0 || unbounded) {  // a half-branch inside a singular box: not proved here
+    if (pc.graph_axis < 0 || unbounded) {  // a half-branch inside a singular box: the spans of its chain
       const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
                          std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
       total += len;
-      undecided += len;
-      status_open += len;
+      status_open += len;  // (the status: certify_half_branch)
+      const Half_branch_chain* chain = chains && !unbounded ? chains->find(pc) : nullptr;
+      undecided += len * (1 - (chain ? half_branch_fibre_share(eq, domain, e, pc, *chain, out.sheets) : 0));
       continue;
     }
     const int axis = pc.graph_axis, other = 1 - axis;

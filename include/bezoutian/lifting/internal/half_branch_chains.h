@@ -1,0 +1,66 @@
+// The fibre over the half-branches of singular boxes (and the other pieces of D = 0 that are not proved graphs:
+// two-branch and fold cells), from the chained proof of their status (certified_lifting.h, certify_half_branch).
+//
+// The chain proves, span by span along the coordinate t normal to the crossing's edge, a zero curve
+// gamma(t) = (x_other(t), y(t)) of the three partner equations, unique in a box W over T and equal to the
+// half-branch H over T; its image K encloses gamma(T), so H over T lies in the box T x K_other. If moreover no
+// point of T x K_other has a partner in the domain outside W_y (no_genuine_partner started from the cover of the
+// partner range minus W_y's interior), then every partner in the domain of a point x of H over T lies in W_y, so
+// (x_other, y) is a zero in W, which is gamma(t): x has at most one partner in the domain, gamma_y(t), and a
+// sheet that follows it is the whole fibre there. A span the chain proves phantom by excluding the whole strip
+// of the cell has no partner in the domain at all: its fibre is empty. The complete lifting (partner_sheets.h)
+// counts a span's fibre proved when it is one of these and its traced points carry that many sheets.
+#ifndef BEZOUTIAN_LIFTING_INTERNAL_HALF_BRANCH_CHAINS_H
+#define BEZOUTIAN_LIFTING_INTERNAL_HALF_BRANCH_CHAINS_H
+
+#include <bezoutian/arithmetic/double_interval.h>
+#include <bezoutian/topology/Curve_topology.h>
+
+#include <array>
+#include <deque>
+#include <vector>
+
+namespace bezoutian {
+namespace internal {
+
+/// A span of a half-branch whose fibre is proved (see the header comment).
+struct Half_branch_span {
+  Double_interval T;                 ///< the span of the coordinate t
+  std::array<Double_interval, 2> Y;  ///< the box holding the only partner in the domain (if `partners` is 1)
+  int partners = 0;                  ///< the number of partners in the domain of each point of H over T: 0 or 1
+};
+
+/// The proved spans of one half-branch piece.
+struct Half_branch_chain {
+  Parameter_box cell, crossing;  ///< the piece's cell and the crossing it starts from (identify the piece)
+  int axis = 0;                  ///< t is the coordinate axis (0: u, 1: the other)
+  double t_crossing = 0, t_end = 0;  ///< t at the crossing and at the far end (the singular or fold point)
+  std::vector<Half_branch_span> spans;
+};
+
+/// The chains of one locus, filled by the status proof and read by the complete lifting.
+class Half_branch_chains {
+ public:
+  Half_branch_chain& add(const Curve_topology_piece& pc) {
+    chains_.push_back(Half_branch_chain{});
+    chains_.back().cell = pc.cell;
+    chains_.back().crossing = pc.crossing;
+    return chains_.back();
+  }
+  const Half_branch_chain* find(const Curve_topology_piece& pc) const {
+    for (const Half_branch_chain& c : chains_)
+      if (same(c.cell, pc.cell) && same(c.crossing, pc.crossing)) return &c;
+    return nullptr;
+  }
+
+ private:
+  static bool same(const Parameter_box& a, const Parameter_box& b) {
+    return a.u0 == b.u0 && a.u1 == b.u1 && a.v0 == b.v0 && a.v1 == b.v1;
+  }
+  std::deque<Half_branch_chain> chains_;  // (references stay valid)
+};
+
+}  // namespace internal
+}  // namespace bezoutian
+
+#endif  // BEZOUTIAN_LIFTING_INTERNAL_HALF_BRANCH_CHAINS_H
