@@ -607,9 +607,10 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
     else
       range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
-    const std::vector<std::array<D, 2>> cover = complement_cover(range, {{W[1], W[2]}});
+    const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
+    const std::vector<std::array<D, 2>> cover = complement_cover(range, {{hole[1], hole[2]}});
     if (budget.take() && no_genuine_partner(eq, box, domain, 1024, &cover))
-      record->spans.push_back({T, {W[1], W[2]}, st == Partner_status::genuine ? 1 : 0});
+      record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0});
   };
   bool first = true;
   double t_done = tc.mid();

@@ -278,7 +278,8 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
     }
     if (!proved || !zero_curve_anchored(eq, axis, T, W, cell)) return false;
     if (eq.self_intersection() && K[j][1].contains_zero() && K[j][2].contains_zero()) return false;
-    holes.push_back({W[1], W[2]});
+    const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
+    holes.push_back({hole[1], hole[2]});
     V = D{std::max(V.lo, K[j][0].lo), std::min(V.hi, K[j][0].hi)};
     if (!(V.lo <= V.hi)) return false;
   }

@@ -195,6 +195,29 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
   return false;
 }
 
+/// A box around W (a box where the zero curve over T is proved unique, prove_zero_curve) in which it is still proved
+/// unique: W widened 2, 4, 8, ... (up to 4096) times about its centre while Krawczyk's strict test passes, the last
+/// that passed (W if none). As the hole of an exclusion of every other partner it leaves a margin: at the edge of a
+/// tight W the equations may come within rounding of zero over the box of arc points, and no subdivision of the
+/// partner range then excludes the edge (the 1.4e-3 circle of a plane 1e-6 below a sphere: a second partner, complex
+/// with a small imaginary part, lies close by).
+template <class Eq>
+inline std::array<Double_interval, 3> widened_unique_box(const Eq& eq, int axis, const Double_interval& T,
+                                                         const std::array<Double_interval, 3>& W) {
+  std::array<Double_interval, 3> best = W;
+  for (double f = 2; f <= 4096; f *= 2) {
+    std::array<Double_interval, 3> wide, test;
+    for (int c = 0; c < 3; ++c) {
+      const double m = W[c].mid(), r = f * 0.5 * (W[c].hi - W[c].lo);
+      wide[c] = Double_interval{m - r, m + r};
+    }
+    test = wide;
+    if (!parametric_partner_krawczyk(eq, axis, T, test, nullptr, true)) break;
+    best = wide;
+  }
+  return best;
+}
+
 /// The anchor of a zero curve proved unique in W over the span T (prove_zero_curve): Krawczyk's test at the single
 /// value t* = mid T encloses gamma(t*) strictly inside the cell's range of the other coordinate, where the line
 /// through t* meets D = 0 only at the arc point; so gamma(t*) is the arc point (classify_partner_span, step 2).
