@@ -917,6 +917,14 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
           }
           split_boxes.push_back(b);
         }
+    // the certified boxes of the arc's ends where branches of D = 0 meet: singular points inside the domain or on
+    // its side, points of the side where two arcs end
+    std::vector<std::array<Double_interval, 2>> singular_boxes;
+    for (std::size_t end : {e.source, e.target}) {
+      const Curve_topology_vertex& v = L.topology.vertices[end];
+      if (v.kind == Curve_topology_vertex::singular || v.singular_on_boundary || v.half_branches >= 2)
+        singular_boxes.push_back({Double_interval{v.u_lo, v.u_hi}, Double_interval{v.v_lo, v.v_hi}});
+    }
     auto attempt = [&](bool every_partner) {
       std::vector<std::vector<std::array<double, 2>>> fibres;
       for (std::size_t i = 0; i < e.polyline.size(); ++i) {
@@ -955,7 +963,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
                                o.max_refinement_points - inserted);
       }
       return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes,
-                                   chains);
+                                   chains, singular_boxes);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {
@@ -1244,7 +1252,8 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
-  internal::Half_branch_chains chains;  // (the half-branches' proved spans, from the status to the fibre proof)
+  // the half-branches' proved spans, from the status proof to the fibre proof
+  internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
@@ -1431,7 +1440,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
-  internal::Half_branch_chains chains;  // (the half-branches' proved spans, from the status to the fibre proof)
+  // the half-branches' proved spans, from the status proof to the fibre proof
+  internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);

@@ -609,7 +609,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
     const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
     const std::vector<std::array<D, 2>> cover = complement_cover(range, {{hole[1], hole[2]}});
-    if (budget.take() && no_genuine_partner(eq, box, domain, 1024, &cover))
+    if (chains->take_exclusion() && no_genuine_partner(eq, box, domain, 1024, &cover))
       record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0});
   };
   bool first = true;
@@ -672,6 +672,46 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       }
     }
     covered = std::fabs(t_done - tc.mid());
+  }
+  // The span reaching p, once the chain has reached its start: halved towards p, each piece from the end of the
+  // previous one to half-way to p's certified box. Near p the two branches through it are apart by about the
+  // distance to p, so every piece has about the conditioning of the first; the pieces stop inside p's box (widened
+  // by a few ulps), which holds p and is not counted: p is the vertex, with its own certificate.
+  const auto& p_box = pc.singular_end == 0 ? pc.first_box : pc.last_box;
+  const double ulps = 8 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(tc.mid()));
+  const double p_near = dir > 0 ? p_box[2 * axis] - ulps : p_box[2 * axis + 1] + ulps;  // the near side of p's box
+  if (!first && m >= 3 && t_done == t_at(m - 2).mid() && (p_near - t_done) * dir > 0) {
+    // a piece that fails is shrunk towards t_done, up to 10 times, and the next pieces keep that share of the
+    // distance to p (about 570 pieces at a sixteenth each from a traced span to an ulp of p)
+    int shrink = 0;
+    for (int step = 0; step < 1000 && (p_near - t_done) * dir > 0; ++step) {
+      const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
+      const double end = (p_near - half) * dir <= ulps ? p_near : half;
+      const D T = dir > 0 ? D{t_done, end} : D{end, t_done};
+      std::array<D, 3> W, K;
+      bool ok = predict_partner_box(eq, axis, T, {W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()}, W) &&
+                prove_zero_curve(eq, axis, T, W, K);
+      std::array<D, 3> both;
+      for (int c = 0; c < 3 && ok; ++c) {  // the zero curves of consecutive pieces agree at their common end
+        both[c] = D{std::max(W_prev[c].lo, W[c].lo), std::min(W_prev[c].hi, W[c].hi)};
+        ok = both[c].lo <= both[c].hi;
+      }
+      ok = ok && parametric_partner_krawczyk(eq, axis, D{t_done, t_done}, both);
+      const Partner_status st = ok ? status_from_partner(eq, domain, unbounded, axis, T, K, nullptr)
+                                   : Partner_status::undecided;
+      if (st == Partner_status::undecided) {
+        if (++shrink > 10) break;
+        continue;
+      }
+      record_fibre(T, W, K, st);
+      W_prev = W;
+      t_done = end;
+    }
+    covered = (p_near - t_done) * dir > 0 ? std::fabs(t_done - tc.mid()) : full;
+    if (record && covered == full) {  // (p's own box)
+      const double t_p = e.polyline[idx[m - 1]][axis];
+      record->spans.push_back({D{std::min(p_near, t_p), std::max(p_near, t_p)}, {}, -1});
+    }
   }
   // the exclusion fallback, span by span from where the chain stopped towards p (the span reaching p, where the
   // point itself may be genuine, is not tried); the first span that fails ends it

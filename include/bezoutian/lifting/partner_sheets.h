@@ -389,8 +389,13 @@ inline double half_branch_fibre_share(const Partner_equations& eq, const Paramet
   if (!(full > 0)) return 0;
   const double lo = std::min(chain.t_crossing, chain.t_end), hi = std::max(chain.t_crossing, chain.t_end);
   double proved = 0;
+  std::vector<Double_interval> done;  // the spans proved, to see whether they cover the piece without a gap
   for (const Half_branch_span& sp : chain.spans) {
-    bool ok = true;
+    bool ok = sp.partners >= 0;
+    if (sp.partners < 0) {
+      proved += std::max(0.0, std::min(sp.T.hi, hi) - std::max(sp.T.lo, lo));
+      done.push_back(sp.T);
+    }
     for (std::size_t i = pc.first; i <= pc.last && ok; ++i) {
       const double t = e.polyline[i][chain.axis];
       if (t < sp.T.lo || t > sp.T.hi) continue;
@@ -404,8 +409,16 @@ inline double half_branch_fibre_share(const Partner_equations& eq, const Paramet
       }
       ok = ok && count == sp.partners;
     }
-    if (ok) proved += std::max(0.0, std::min(sp.T.hi, hi) - std::max(sp.T.lo, lo));
+    if (ok) {
+      proved += std::max(0.0, std::min(sp.T.hi, hi) - std::max(sp.T.lo, lo));
+      done.push_back(sp.T);
+    }
   }
+  std::sort(done.begin(), done.end(), [](const Double_interval& a, const Double_interval& b) { return a.lo < b.lo; });
+  double reach = lo;
+  for (const Double_interval& T : done)
+    if (T.lo <= reach) reach = std::max(reach, T.hi);
+  if (reach >= hi) return 1;
   return std::min(1.0, proved / full);
 }
 
@@ -414,7 +427,8 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
                                          const std::vector<std::vector<std::array<double, 2>>>& fibres,
                                          Exclusion_budget& budget,
                                          const std::vector<std::array<Double_interval, 2>>& split_boxes = {},
-                                         const Half_branch_chains* chains = nullptr) {
+                                         const Half_branch_chains* chains = nullptr,
+                                         const std::vector<std::array<Double_interval, 2>>& singular_boxes = {}) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
@@ -423,6 +437,7 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
   double total = 0, undecided = 0, status_open = 0;
   // the undecided lengths of the spans (polyline points i, i + 1) of the graph pieces: fibre and status
   std::vector<double> span_undecided(n, 0), span_open(n, 0);
+  int deep_halvings_left = 256;
   for (const Curve_topology_piece& pc : e.pieces) {
     if (pc.last >= n || pc.first >= pc.last) continue;
     if (pc.graph_axis < 0 || unbounded) {  // a half-branch inside a singular box: the spans of its chain
@@ -536,8 +551,21 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           }
           continue;
         }
-        if (sp.depth < 3) {
-          const double m = 0.5 * (sp.f0 + sp.f1);
+        // a span that reaches a singular point of D = 0 (where both branches meet and the Jacobian of the span
+        // proof is singular) is halved towards it: the halves away from it have about the conditioning of the
+        // first, so they are proved down to the point's own certified box, which is not counted
+        bool inside_point = false, meets_point = false;
+        for (const auto& g : singular_boxes) {
+          inside_point = inside_point || (g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi);
+          meets_point = meets_point || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
+        }
+        if (inside_point) continue;
+        const double m = 0.5 * (sp.f0 + sp.f1);
+        // (at most 256 halvings beyond the third per edge: next to a point where the arc comes within rounding of
+        // the cell's side, as at a tangency with it, the anchor of every half fails from some depth on)
+        const bool deeper = sp.depth < 3 || (meets_point && sp.depth < 64 && deep_halvings_left > 0);
+        if (deeper && sp.f0 < m && m < sp.f1) {
+          if (sp.depth >= 3) --deep_halvings_left;
           todo.push_back({m, sp.f1, sp.depth + 1});
           todo.push_back({sp.f0, m, sp.depth + 1});
           continue;

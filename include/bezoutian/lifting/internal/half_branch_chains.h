@@ -17,6 +17,7 @@
 #include <bezoutian/topology/Curve_topology.h>
 
 #include <array>
+#include <cstddef>
 #include <deque>
 #include <vector>
 
@@ -27,7 +28,9 @@ namespace internal {
 struct Half_branch_span {
   Double_interval T;                 ///< the span of the coordinate t
   std::array<Double_interval, 2> Y;  ///< the box holding the only partner in the domain (if `partners` is 1)
-  int partners = 0;                  ///< the number of partners in the domain of each point of H over T: 0 or 1
+  /// the number of partners in the domain of each point of H over T: 0 or 1; -1: T is the singular point's own
+  /// certified box (widened by a few ulps), not counted as undecided
+  int partners = 0;
 };
 
 /// The proved spans of one half-branch piece.
@@ -38,9 +41,16 @@ struct Half_branch_chain {
   std::vector<Half_branch_span> spans;
 };
 
-/// The chains of one locus, filled by the status proof and read by the complete lifting.
+/// The chains of one locus, filled by the status proof and read by the complete lifting. Their exclusions have a
+/// budget of their own, so that they never take one from the status proofs.
 class Half_branch_chains {
  public:
+  explicit Half_branch_chains(std::size_t exclusions) : exclusions_left_(exclusions) {}
+  bool take_exclusion() {
+    if (exclusions_left_ == 0) return false;
+    --exclusions_left_;
+    return true;
+  }
   Half_branch_chain& add(const Curve_topology_piece& pc) {
     chains_.push_back(Half_branch_chain{});
     chains_.back().cell = pc.cell;
@@ -57,6 +67,7 @@ class Half_branch_chains {
   static bool same(const Parameter_box& a, const Parameter_box& b) {
     return a.u0 == b.u0 && a.u1 == b.u1 && a.v0 == b.v0 && a.v1 == b.v1;
   }
+  std::size_t exclusions_left_;
   std::deque<Half_branch_chain> chains_;  // (references stay valid)
 };
 
