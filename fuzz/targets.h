@@ -35,7 +35,7 @@ void bpt(const std::uint8_t* data, std::size_t size);
 /// \brief Planar curve intersections: the bytes decode to one or two rational Bezier curves of degree 1-5 with
 /// small coordinates (header byte: self_intersections() or intersect_curves(), polynomial or rational, weights
 /// of any sign, coordinate alphabet, method; the second curve independent, a piece of the first, through a point
-/// of the first, or the first perturbed), solved with tight Intersection_limits (degree 5, degree product 16,
+/// of the first, or the first perturbed), solved with tight Intersection_limits (degree 5, degree product 12,
 /// time_limit 2 s).
 /// Refusals are Invalid_input, Limit_exceeded and the documented Error of base points and degenerate
 /// self-intersection systems. Every reported point and overlap end lies on both curves (exact rational interval
