@@ -2087,16 +2087,27 @@ TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal m
   }
 }
 
+namespace {
+// The unit sphere with longitude and latitude 2 atan((2u - 1)/2), 2 atan((2v - 1)/2) (|z| <= 4/5), and the cylinder
+// (x - 1/2)^2 + y^2 = 1/4 with angle 2 atan((2u - 1)/2), z = 2v - 1: Viviani's pair.
+Patch viviani_sphere() {
+  const std::string a = "((2*u-1)/2)", b = "((2*v-1)/2)";
+  return bezoutian_test::rational_patch_from_power(
+      {"(1-" + a + "^2)*(1-" + b + "^2)", "2*" + a + "*(1-" + b + "^2)", "2*" + b + "*(1+" + a + "^2)",
+       "(1+" + a + "^2)*(1+" + b + "^2)"}, 2, 2);
+}
+Patch viviani_cylinder() {
+  const std::string a = "((2*u-1)/2)";
+  return bezoutian_test::rational_patch_from_power({"1", a, "(2*v-1)*(1+" + a + "^2)", "1+" + a + "^2"}, 2, 1);
+}
+}  // namespace
+
 TEST_CASE("Viviani: a sphere and a cylinder; the cylinder's sides on D = 0 are proved phantom", "[surface][structured][edge]") {
   // sphere |p| = 1 (longitude, latitude 2 atan((2u - 1)/2), 2 atan((2v - 1)/2): |z| <= 4/5) and the cylinder
   // (x - 1/2)^2 + y^2 = 1/4, z = 2t - 1. D vanishes on t = 0 and t = 1: each side's circle (z = -1, z = 1) passes
   // through a pole of the sphere at the circle's parameter infinity, and the poles' latitude parameter lies outside
   // [0, 1]. The circles (|z| = 1) meet the sphere patch (|z| <= 4/5) nowhere: every point of both sides is phantom.
-  const std::string a = "((2*u-1)/2)", b = "((2*v-1)/2)";
-  const Patch sphere = bezoutian_test::rational_patch_from_power(
-      {"(1-" + a + "^2)*(1-" + b + "^2)", "2*" + a + "*(1-" + b + "^2)", "2*" + b + "*(1+" + a + "^2)",
-       "(1+" + a + "^2)*(1+" + b + "^2)"}, 2, 2);
-  const Patch cylinder = bezoutian_test::rational_patch_from_power({"1", a, "(2*v-1)*(1+" + a + "^2)", "1+" + a + "^2"}, 2, 1);
+  const Patch sphere = viviani_sphere(), cylinder = viviani_cylinder();
   const Surface_locus L = intersection_locus(sphere, cylinder);
   REQUIRE(L.edge_lines.size() == 2);
   for (const auto& e : L.edge_lines) {
@@ -2120,11 +2131,7 @@ TEST_CASE("Viviani: both branches through the tangent point are complete, the fi
   // The sphere and cylinder of the test above meet along Viviani's curve (cos^2 h, sin h cos h, +-sin h),
   // |h| <= atan(1/2): two branches crossing at the tangent point (1, 0, 0), the node (u, v) = (1/2, 1/2) of D = 0
   // (sphere: u = tan(h/2) + 1/2, v = +-tan(h/2) + 1/2; cylinder: u = tan h + 1/2, v = (1 +- sin h)/2).
-  const std::string a = "((2*u-1)/2)", b = "((2*v-1)/2)";
-  const Patch sphere = bezoutian_test::rational_patch_from_power(
-      {"(1-" + a + "^2)*(1-" + b + "^2)", "2*" + a + "*(1-" + b + "^2)", "2*" + b + "*(1+" + a + "^2)",
-       "(1+" + a + "^2)*(1+" + b + "^2)"}, 2, 2);
-  const Patch cylinder = bezoutian_test::rational_patch_from_power({"1", a, "(2*v-1)*(1+" + a + "^2)", "1+" + a + "^2"}, 2, 1);
+  const Patch sphere = viviani_sphere(), cylinder = viviani_cylinder();
   Surface_intersection_options fine;
   fine.polyline_tolerance = 1e-3;
   const Surface_locus L = intersection_locus(sphere, cylinder, fine);
