@@ -602,13 +602,8 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     }
     const D X1 = axis == 0 ? T : K[0], X2 = axis == 0 ? K[0] : T;
     const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
-    std::array<D, 2> range;  // (the partner range of no_genuine_partner)
-    if (eq.self_intersection())
-      range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
-    else
-      range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
     const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
-    const std::vector<std::array<D, 2>> cover = complement_cover(range, {{hole[1], hole[2]}});
+    const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, box, domain), {{hole[1], hole[2]}});
     if (chains->take_exclusion() && no_genuine_partner(eq, box, domain, 1024, &cover))
       record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0});
   };

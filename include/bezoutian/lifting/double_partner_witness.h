@@ -813,6 +813,16 @@ inline bool prove_double_partner_point(const Partner_equations& eq, const Parame
 /// `start` (optional): pieces known to cover every candidate partner of the points of `box` (those that survived
 /// the test on a box containing it); on failure `survivors` (optional) receives pieces covering every candidate
 /// partner not excluded.
+/// The range of the partner y of the points of `box` that puts both patch points in `domain`: (l, k) with u + l
+/// and v + k in the domain for a self-intersection, (v, s) in the domain for two patches.
+inline std::array<Double_interval, 2> partner_range(const Partner_equations& eq, const Parameter_box& box,
+                                                    const Parameter_box& domain) {
+  using D = Double_interval;
+  if (eq.self_intersection())
+    return {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
+  return {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
+}
+
 inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box& box, const Parameter_box& domain,
                                int max_pieces = 1024, const std::vector<std::array<Double_interval, 2>>* start = nullptr,
                                std::vector<std::array<Double_interval, 2>>* survivors = nullptr) {
@@ -820,11 +830,7 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
   const D x1 = D::hull(box.u0, box.u1), x2 = D::hull(box.v0, box.v1);
   const Partner_equations::Restriction on_box(eq, x1, x2);
   std::unique_ptr<Partner_equations::Restriction> at_centre;  // x at the box's centre (mean value forms)
-  std::array<D, 2> range;
-  if (eq.self_intersection())  // l: u + l in [d.u0, d.u1]; k: v + k in [d.v0, d.v1]
-    range = {D::hull(domain.u0 - box.u1, domain.u1 - box.u0), D::hull(domain.v0 - box.v1, domain.v1 - box.v0)};
-  else  // (v, s) in the domain
-    range = {D::hull(domain.v0, domain.v1), D::hull(domain.u0, domain.u1)};
+  const std::array<D, 2> range = partner_range(eq, box, domain);
   std::vector<std::array<D, 2>> stack;
   if (!start) {
     stack.push_back(range);
