@@ -628,7 +628,8 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     else
       break;
     std::array<D, 3> W, K;
-    bool ok = predict_partner_box(eq, axis, T, guess, W) && prove_zero_curve(eq, axis, T, W, K);
+    // (the tight box of the image inflation, a poor hole for the fibre's exclusion, only where halving ends)
+    bool ok = predict_partner_box(eq, axis, T, guess, W) && prove_zero_curve(eq, axis, T, W, K, sp.depth >= 8);
     if (ok && at_c) {  // anchor at c: the zero at t_c lies in c's isolating interval on its line
       std::array<D, 3> at = W;
       const Rational &lo = axis == 0 ? pc.crossing.v0 : pc.crossing.u0, &hi = axis == 0 ? pc.crossing.v1 : pc.crossing.u1;
@@ -685,7 +686,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       const D T = dir > 0 ? D{t_done, end} : D{end, t_done};
       std::array<D, 3> W, K;
       bool ok = predict_partner_box(eq, axis, T, {W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()}, W) &&
-                prove_zero_curve(eq, axis, T, W, K);
+                prove_zero_curve(eq, axis, T, W, K, shrink >= 10);
       std::array<D, 3> both;
       for (int c = 0; c < 3 && ok; ++c) {  // the zero curves of consecutive pieces agree at their common end
         both[c] = D{std::max(W_prev[c].lo, W[c].lo), std::min(W_prev[c].hi, W[c].hi)};

@@ -266,7 +266,9 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
     if (predicted) W = P;
     // A predicted box thin in one coordinate (a graph whose other coordinate hardly moves, e.g. a line u = c) may
     // be thinner than the operator's overestimation there: then a box of more even widths
-    bool proved = prove_zero_curve(eq, axis, T, W, K[j]);
+    // (the inflation of the operator's image alone comes last: its box is the tightest, the worst hole)
+    const std::array<D, 3> first = W;
+    bool proved = prove_zero_curve(eq, axis, T, W, K[j], false);
     if (!proved && predicted) {
       double rmax = 0;
       for (int c = 0; c < 3; ++c) rmax = std::max(rmax, 0.5 * (P[c].hi - P[c].lo));
@@ -274,6 +276,10 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
         const double m = P[c].mid(), r = std::max(2 * 0.5 * (P[c].hi - P[c].lo), 0.5 * rmax);
         W[c] = D{m - r, m + r};
       }
+      proved = prove_zero_curve(eq, axis, T, W, K[j], false);
+    }
+    if (!proved) {
+      W = first;
       proved = prove_zero_curve(eq, axis, T, W, K[j]);
     }
     if (!proved || !zero_curve_anchored(eq, axis, T, W, cell)) return false;
@@ -321,56 +327,66 @@ inline void prove_piece_folds(const Partner_equations& eq, const Parameter_box& 
         const auto &ya = Sa.partner[i - Sa.first], &yb = Sb.partner[i - Sb.first];
         return std::fabs(ya[0] - yb[0]) + std::fabs(ya[1] - yb[1]);
       };
+      // from a fold at f, in the direction dir (towards the side where the sheets are apart)
+      auto decide_fold = [&](std::size_t f, long dir) {
+        // the far side: up to the first point without either sheet, or the piece's end
+        std::size_t far = f;
+        while (far != (dir < 0 ? pc.last : pc.first) && (present(Sa, far) || present(Sb, far)))
+          far = std::size_t(long(far) - dir);
+        int attempts = 0;
+        for (long i0 = long(f) + dir; i0 >= long(lo) && i0 <= long(hi) && attempts < 3; i0 += dir) {
+          const std::size_t s = std::size_t(i0);
+          if (dist(s) < 16 * dist(f) || dist(s) <= 1e-9 * scale) continue;
+          ++attempts;
+          const Fold_proof fp = prove_partner_fold(eq, domain, pc.cell, axis, coord(s, axis).mid(), coord(s, other).mid(),
+                                                   Sa.partner[s - Sa.first], Sb.partner[s - Sb.first], coord(f, axis).mid(),
+                                                   coord(far, axis).mid(), budget);
+          if (!fp.proved) continue;
+          auto within = [](const D& x, const D& r) { return r.lo <= x.lo && x.hi <= r.hi; };
+          const std::size_t first = std::min(s, far), last = std::max(s, far);
+          for (std::size_t i = first; i <= last; ++i) {
+            const D t = coord(i, axis);
+            if (within(t, fp.phantom)) out.phantom_proved[i] = 1;
+            if (!within(t, fp.genuine)) continue;
+            for (Partner_sheet* S : {&out.sheets[a], &out.sheets[b]})
+              if (present(*S, i)) {
+                S->enclosure[i - S->first] = fp.partners;
+                S->genuine_proved[i - S->first] = 1;
+              }
+          }
+          std::vector<D> decided{fp.genuine, fp.fold, fp.phantom};
+          std::sort(decided.begin(), decided.end(), [](const D& x, const D& y) { return x.lo < y.lo; });
+          auto uncovered = [&](const D& T) {  // the length of T outside the decided ranges (0 exactly if covered)
+            double open = 0, at = T.lo;
+            for (const D& r : decided) {
+              if (!(r.lo <= r.hi)) continue;
+              if (r.lo > at) open += std::min(r.lo, T.hi) - at;
+              at = std::max(at, r.hi);
+              if (at >= T.hi) return open;
+            }
+            return open + (T.hi - at);
+          };
+          for (std::size_t i = first; i < last; ++i) {
+            const D ta = coord(i, axis), tb = coord(i + 1, axis);
+            const D T{std::min(ta.lo, tb.lo), std::max(ta.hi, tb.hi)};
+            const double open = uncovered(T);
+            span_undecided[i] = std::min(span_undecided[i], open);
+            span_open[i] = std::min(span_open[i], open);
+          }
+          break;
+        }
+      };
+      // the closest approach of the two sheets, and the piece's ends where they meet (a fold at a corner of the
+      // cell, where both coordinates of the arc are extreme: the sheets of two orthogonal extrusions meet at both
+      // ends of the arc)
       std::size_t f = lo;
       for (std::size_t i = lo; i <= hi; ++i)
         if (dist(i) < dist(f)) f = i;
       if (!(dist(f) <= 1e-3 * scale)) continue;
-      const long dir = f - lo >= hi - f ? -1 : 1;  // towards the side where the sheets are apart
-      // the far side: up to the first point without either sheet, or the piece's end
-      std::size_t far = f;
-      while (far != (dir < 0 ? pc.last : pc.first) && (present(Sa, far) || present(Sb, far))) far = std::size_t(long(far) - dir);
-      int attempts = 0;
-      for (long i0 = long(f) + dir; i0 >= long(lo) && i0 <= long(hi) && attempts < 3; i0 += dir) {
-        const std::size_t s = std::size_t(i0);
-        if (dist(s) < 16 * dist(f) || dist(s) <= 1e-9 * scale) continue;
-        ++attempts;
-        const Fold_proof fp = prove_partner_fold(eq, domain, pc.cell, axis, coord(s, axis).mid(), coord(s, other).mid(),
-                                                 Sa.partner[s - Sa.first], Sb.partner[s - Sb.first], coord(f, axis).mid(),
-                                                 coord(far, axis).mid(), budget);
-        if (!fp.proved) continue;
-        auto within = [](const D& x, const D& r) { return r.lo <= x.lo && x.hi <= r.hi; };
-        const std::size_t first = std::min(s, far), last = std::max(s, far);
-        for (std::size_t i = first; i <= last; ++i) {
-          const D t = coord(i, axis);
-          if (within(t, fp.phantom)) out.phantom_proved[i] = 1;
-          if (!within(t, fp.genuine)) continue;
-          for (Partner_sheet* S : {&out.sheets[a], &out.sheets[b]})
-            if (present(*S, i)) {
-              S->enclosure[i - S->first] = fp.partners;
-              S->genuine_proved[i - S->first] = 1;
-            }
-        }
-        std::vector<D> decided{fp.genuine, fp.fold, fp.phantom};
-        std::sort(decided.begin(), decided.end(), [](const D& x, const D& y) { return x.lo < y.lo; });
-        auto uncovered = [&](const D& T) {  // the length of T outside the decided ranges (0 exactly if covered)
-          double open = 0, at = T.lo;
-          for (const D& r : decided) {
-            if (!(r.lo <= r.hi)) continue;
-            if (r.lo > at) open += std::min(r.lo, T.hi) - at;
-            at = std::max(at, r.hi);
-            if (at >= T.hi) return open;
-          }
-          return open + (T.hi - at);
-        };
-        for (std::size_t i = first; i < last; ++i) {
-          const D ta = coord(i, axis), tb = coord(i + 1, axis);
-          const D T{std::min(ta.lo, tb.lo), std::max(ta.hi, tb.hi)};
-          const double open = uncovered(T);
-          span_undecided[i] = std::min(span_undecided[i], open);
-          span_open[i] = std::min(span_open[i], open);
-        }
-        break;
-      }
+      decide_fold(f, f - lo >= hi - f ? -1 : 1);
+      for (const std::size_t end : {lo, hi})
+        if (end != f && dist(end) <= 1e-3 * scale && dist(end) < dist(end == lo ? lo + 1 : hi - 1))
+          decide_fold(end, end == lo ? 1 : -1);
     }
 }
 

@@ -13,20 +13,27 @@
 //  1. Krawczyk's test (strict, parametric in y_c over Y, a neighbourhood of [y_a,c, y_b,c]) on a box W: for every
 //     y_c in Y exactly one zero gamma(y_c) of E in W, continuous (the span proofs' argument with the roles of t and
 //     y_c exchanged). Every zero of E in Y x W is on gamma.
-//  2. gamma's other coordinate lies strictly inside the cell, where every line t = const meets D = 0 at most once:
-//     a point of gamma over a t of the piece is the arc point there, with a partner.
+//  2. Where gamma's other coordinate lies strictly inside the cell, where every line t = const meets D = 0 at most
+//     once, a point of gamma over a t of the piece is the arc point there, with a partner.
 //  3. The t of gamma at both ends of Y is before t0 (Krawczyk images at the two single values), and at one value
-//     y* it is at least tau_lo: by continuity gamma passes every t in [t0, tau_lo] on each side of y*, so those arc
-//     points are genuine when gamma's partners lie in the partner domain (checked on the whole enclosure). An
-//     upper bound tau_hi of t over gamma comes from Krawczyk images on a bisection of Y around y*, each on the box
-//     the image of its parent gave (every zero of E in a box lies in the box's Krawczyk image).
+//     y* it is at least tau_lo: by continuity gamma passes every t in [t0, tau_lo] on each side of y*. An upper
+//     bound tau_hi of t over gamma comes from Krawczyk images on a bisection of Y around y*, each on the box the
+//     image of its parent gave (every zero of E in a box lies in the box's Krawczyk image). These pieces cover Y;
+//     where a piece's enclosure lies inside the cell (step 2) with both points in the domain, the arc points it
+//     passes are genuine. The claim stops before the t of the first piece where that fails: at a fold in a corner of
+//     the cell (two cylinders of one radius: the arc u = t reaches the corner (1, 1), where both coordinates are
+//     extreme along gamma), the pieces next to y* reach over the cell's sides by their rounding only.
 //  4. Completeness over X: no point of X x W_o has a partner in the domain outside the hole Y x W_c' (the
 //     exclusion from the complement cover, as in partner_sheets.h), and no point of X x (the cell's other range
 //     outside W_o) has a partner in the domain at all (exclude_strips). So every partner of an arc point over X
 //     is on gamma, and an arc point beyond tau_hi has none: phantom.
 // The remaining stretch past t_ext is excluded by strips of doubling width (the fibre's near-real root recedes
-// from the real plane like the square root of the distance to the fold). Only the arc points in [tau_lo, tau_hi],
-// an interval of a few ulps around the fold, are left without a status.
+// from the real plane like the square root of the distance to the fold). Only the arc points in [claim, tau_hi],
+// an interval of a few ulps around the fold (about a hundred at a corner), are left without a status.
+//
+// Near a fold one unknown depends on the parameter or on another unknown quadratically (u ~ 1 - s^2 above), so
+// Krawczyk's linear bound of its range grows with the other's width: the box of step 1 is found by inflating the
+// operator's image alone (prove_zero_curve), which lets the other unknown shrink to its range.
 #ifndef BEZOUTIAN_LIFTING_INTERNAL_PARTNER_FOLD_PROOFS_H
 #define BEZOUTIAN_LIFTING_INTERNAL_PARTNER_FOLD_PROOFS_H
 
@@ -127,16 +134,19 @@ inline Fold_proof prove_partner_fold(const Partner_equations& eq, const Paramete
   std::array<D, 3> W, K;
   if (!predict_partner_box(ch, 0, Y, {o0, 0.5 * (t0 + t_fold), 0.5 * (ya[1 - c] + yb[1 - c])}, W)) return out;
   if (!prove_zero_curve(ch, 0, Y, W, K)) return out;
-  // 2. gamma's points are arc points; its partners in the domain (and not the trivial one)
+  // 2. gamma's points are arc points, with partners in the domain (and not the trivial one), where their enclosure
+  // lies inside the cell and the domain; checked per piece of Y below, as a fold at a corner of the cell (both
+  // coordinates of the arc extreme there) reaches the cell's sides
   const Rational &o_lo = axis == 0 ? cell.v0 : cell.u0, &o_hi = axis == 0 ? cell.v1 : cell.u1;
-  if (!(Rational(K[0].lo) > o_lo && Rational(K[0].hi) < o_hi)) return out;
   const std::array<D, 4> z = ch.original({Y, K[0], K[1], K[2]});
   if (eq.self_intersection() && z[2].contains_zero() && z[3].contains_zero()) return out;
-  std::array<D, 2> P, Q;
-  eq.points(z, P, Q);
-  if (!(interval_inside(P[0], domain.u0, domain.u1) && interval_inside(P[1], domain.v0, domain.v1) &&
-        interval_inside(Q[0], domain.u0, domain.u1) && interval_inside(Q[1], domain.v0, domain.v1)))
-    return out;
+  auto arc_points_genuine = [&](const D& y, const std::array<D, 3>& box) {
+    if (!(Rational(box[0].lo) > o_lo && Rational(box[0].hi) < o_hi)) return false;
+    std::array<D, 2> P, Q;
+    eq.points(ch.original({y, box[0], box[1], box[2]}), P, Q);
+    return interval_inside(P[0], domain.u0, domain.u1) && interval_inside(P[1], domain.v0, domain.v1) &&
+           interval_inside(Q[0], domain.u0, domain.u1) && interval_inside(Q[1], domain.v0, domain.v1);
+  };
   // 3. both ends of Y before t0; the extreme tau_lo reached at y*, the bound tau_hi over gamma
   auto t_at = [&](double y, D& t) {
     std::array<D, 3> box = K;
@@ -177,10 +187,10 @@ inline Fold_proof prove_partner_fold(const Partner_equations& eq, const Paramete
   for (int round = 0; round < 200; ++round) {
     auto top = std::max_element(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) { return a.bound < b.bound; });
     if (top->bound - sigma * tau_lo <= 1e-15 * (1 + std::fabs(tau_lo))) break;
+    const double m = top->y.mid();
+    if (!(top->y.lo < m && m < top->y.hi)) break;  // (tau_hi: the bound of a piece too narrow to halve)
     const Piece p = *top;
     pieces.erase(top);
-    const double m = p.y.mid();
-    if (!(p.y.lo < m && m < p.y.hi)) return out;
     for (const D& half : {D{p.y.lo, m}, D{m, p.y.hi}}) {
       Piece h{half, p.box, 0};
       if (!fold_image(ch, h.y, h.box, 2)) return out;
@@ -191,6 +201,15 @@ inline Fold_proof prove_partner_fold(const Partner_equations& eq, const Paramete
   double tau_hi = -HUGE_VAL;
   for (const Piece& p : pieces) tau_hi = std::max(tau_hi, p.bound);
   tau_hi *= sigma;
+  // the pieces cover Y: an arc point over t is a point of gamma in a piece where the check of step 2 holds, unless
+  // t reaches the range of a piece where it fails; genuine is claimed before the first such t only
+  double claim = tau_lo;
+  for (const Piece& p : pieces)
+    if (!arc_points_genuine(p.y, p.box)) {
+      const double reach = sigma > 0 ? p.box[1].lo : p.box[1].hi;
+      if (!before(t0, reach)) return out;
+      if (before(reach, claim) || reach == claim) claim = std::nextafter(reach, sigma * -HUGE_VAL);
+    }
   // 4. completeness over X = [t0, t_ext]: a box of uniqueness wide enough past the fold and across the arc for the
   // exclusions next to it (the strips' boxes near W_o need sides about their distance to the arc)
   const bool far_side = before(tau_hi, t_far);
@@ -231,11 +250,11 @@ inline Fold_proof prove_partner_fold(const Partner_equations& eq, const Paramete
     if (!exclude_strips(eq, domain, axis, {X}, strip_cell, nullptr, budget)[0]) return out;
   }
   out.proved = true;
-  out.genuine = D{std::min(t0, tau_lo), std::max(t0, tau_lo)};
+  out.genuine = D{std::min(t0, claim), std::max(t0, claim)};
   out.partners = {z[2], z[3]};
   // (tau_hi itself is not claimed phantom: the fold's graph coordinate may equal it)
   const double first = std::nextafter(tau_hi, sigma * HUGE_VAL);
-  out.fold = D{std::min(tau_lo, first), std::max(tau_lo, first)};
+  out.fold = D{std::min(claim, first), std::max(claim, first)};
   if (!far_side) return out;
   double reached = t_ext;  // phantom over (tau_hi, reached]
   // the stretch past t_ext: strips of doubling width, from the fold outwards

@@ -174,22 +174,33 @@ inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T
 
 /// Krawczyk's test with strict inclusion over the span T, with epsilon-inflation from the box W (updated to the
 /// box that passed, in which the zero curve gamma(t), t in T, is unique); K receives the operator's image, which
-/// encloses gamma(T).
+/// encloses gamma(T). The box found by inflating the image alone can be much tighter than the one found from the
+/// hull (a narrower hole for an exclusion around it): image_inflation = false leaves that step to the caller.
 template <class Eq>
 inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
-                             std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K) {
+                             std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K,
+                             bool image_inflation = true) {
   using D = Double_interval;
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    std::array<D, 3> image, trial = W;
-    if (parametric_partner_krawczyk(eq, axis, T, trial, &image, true)) {
-      K = trial;
-      return true;
-    }
-    if (!(std::isfinite(image[0].lo) && std::isfinite(image[0].hi))) return false;
-    // epsilon-inflation: retry on the hull of W and the operator's image, widened
-    for (int c = 0; c < 3; ++c) {
-      const double lo = std::min(W[c].lo, image[c].lo), hi = std::max(W[c].hi, image[c].hi), r = 0.1 * (hi - lo) + 1e-15;
-      W[c] = D{lo - r, hi + r};
+  const std::array<D, 3> start = W;
+  // epsilon-inflation, first on the hull of W and the operator's image, then (from the prediction again, unless
+  // image_inflation is false) on the image alone: where one unknown depends on another quadratically (at a fold of
+  // the partner, u ~ 1 - s^2), the image of that unknown grows with the width of the other, and only the image lets
+  // the other shrink to its range
+  for (int mode = 0; mode < (image_inflation ? 2 : 1); ++mode) {
+    W = start;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      std::array<D, 3> image, trial = W;
+      if (parametric_partner_krawczyk(eq, axis, T, trial, &image, true)) {
+        K = trial;
+        return true;
+      }
+      if (!(std::isfinite(image[0].lo) && std::isfinite(image[0].hi))) return false;
+      for (int c = 0; c < 3; ++c) {
+        const double lo = mode == 0 ? std::min(W[c].lo, image[c].lo) : image[c].lo;
+        const double hi = mode == 0 ? std::max(W[c].hi, image[c].hi) : image[c].hi;
+        const double r = 0.1 * (hi - lo) + 1e-15;
+        W[c] = D{lo - r, hi + r};
+      }
     }
   }
   return false;
