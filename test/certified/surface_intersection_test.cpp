@@ -1616,6 +1616,69 @@ TEST_CASE("structured surfaces: two cylinders crossing, both branches over one p
   CHECK(far > 1000);
 }
 
+TEST_CASE("structured surfaces: an extruded loop's double line, straight and sheared, complete to its split points",
+          "[surface][structured][self]") {
+  // The nodal cubic (c^2 - 1, c (c^2 - 1)), c = 3u - 3/2, passes twice through (0, 0): at u = 1/6 and u = 5/6.
+  // Extruded along z = v + h u its double curve is the line x = y = 0: the points (1/6, v1) and (5/6, v2) with
+  // v1 + h/6 = v2 + 5h/6. The locus of D = 0 is the two lines u = 1/6 and u = 5/6, each with the constant partner
+  // (l, k) = (+-2/3, +-2h/3); the kernel of B along them is the trivial partner (0, 0).
+  const std::string c = "(3*u - 3/2)";
+  for (const int sheared : {0, 1}) {
+    INFO("sheared " << sheared);
+    const double h = sheared ? 0.5 : 0;
+    Surface_intersection_options fine;
+    fine.polyline_tolerance = 1e-4;
+    const Surface_locus L = self_intersection_locus(
+        power_patch(c + "^2 - 1", c + "*(" + c + "^2 - 1)", sheared ? "v + u/2" : "v", "1", 3, 1), fine);
+    INFO(L.note);
+    REQUIRE(L.topology_computed);
+    CHECK(L.topology_method == "subdivision");
+    REQUIRE(L.arcs.size() == 2);
+    // the genuine double curve: z in [5h/6, 1 + h/6] (both preimages' v in [0, 1])
+    const double z0 = 5 * h / 6, z1 = 1 + h / 6;
+    for (const auto& a : L.arcs) {
+      // every partner and every status proved; straight, k = 0 all along, and next to the box's sides v = 0 and
+      // v = 1 the point P = (u, v + k) is within rounding of the side: the exact proof of a line with one partner
+      // (lifting/constant_partner_lines.h) decides the whole arc
+      CHECK(a.fibre_undecided_fraction == 0);
+      CHECK(a.undecided_fraction == 0);
+      for (const auto& q : a.points)
+        if (!sheared) CHECK((q.genuine && q.status_proved && q.partner_enclosure[1][0] == 0 &&
+                             q.partner_enclosure[1][1] == 0));
+      for (const auto& sh : a.sheets)
+        for (const auto& q : sh.points) {
+          CHECK(std::hypot(q.point_3d[0], q.point_3d[1]) < 1e-9);
+          CHECK(q.point_3d[2] > z0 - 1e-9);
+          CHECK(q.point_3d[2] < z1 + 1e-9);
+          CHECK(std::fabs(q.first[0] - q.second[0]) == Approx(2.0 / 3).margin(1e-9));
+        }
+    }
+    // sheared: the genuine part of each line ends where the partner's v leaves [0, 1], at v = 1/3 on u = 5/6 and at
+    // v = 2/3 on u = 1/6 (certified split points); the straight lines are genuine from side to side
+    std::size_t at_third = 0, at_two_thirds = 0;
+    for (const auto& sp : L.split_points) {
+      const auto& q = L.arcs[sp.arc].points[sp.index];
+      at_third += std::fabs(q.projection[0] - 5.0 / 6) < 1e-12 && std::fabs(q.projection[1] - 1.0 / 3) < 1e-12;
+      at_two_thirds += std::fabs(q.projection[0] - 1.0 / 6) < 1e-12 && std::fabs(q.projection[1] - 2.0 / 3) < 1e-12;
+    }
+    CHECK(L.split_points.size() == (sheared ? 2u : 0u));
+    CHECK(at_third == (sheared ? 1u : 0u));
+    CHECK(at_two_thirds == (sheared ? 1u : 0u));
+    // completeness: 2 x 2001 samples of the double line, each with its two preimages in both orders (both arcs)
+    std::vector<std::array<std::array<double, 3>, 3>> samples;
+    for (int i = 0; i <= 2000; ++i) {
+      const double z = z0 + (z1 - z0) * i / 2000;
+      const std::array<double, 3> a{5.0 / 6, z - 5 * h / 6, 0}, b{1.0 / 6, z - h / 6, 0}, x{0, 0, z};
+      samples.push_back({a, x, b});
+      samples.push_back({b, x, a});
+    }
+    const auto gap = worst_sheet_gap(L, samples);
+    CHECK(gap[0] < 1e-3);
+    CHECK(gap[1] < 1e-3);
+    CHECK(gap[2] < 1e-3);
+  }
+}
+
 TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one line that meet at a fold",
           "[surface][structured][sheets]") {
   // sphere patch: latitude a = u/2, longitude b = 1/2 + 3v/2, (cos, sin) = (1 - a^2, 2a)/(1 + a^2); the plane

@@ -24,6 +24,7 @@
 #include <bezoutian/topology/Curve_topology_by_subdivision.h>
 #include <bezoutian/intersection/internal/box_edge_lines.h>
 #include <bezoutian/lifting/certified_lifting.h>
+#include <bezoutian/lifting/constant_partner_lines.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/floating_null_vector.h>
 #include <bezoutian/topology/matrix_zero_points.h>
@@ -759,6 +760,24 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
     Locus_arc& arc = L.arcs[k];
     Curve_topology_edge& e = L.topology.edges[k];
     if (arc.points.size() != e.polyline.size()) continue;
+    // On a double line of a self-intersection the kernel of B can be spanned by the trivial partner y = 0 at every
+    // point (an extruded loop: the kernel vector is (l, k) = (0, 0) all along the line), so no change of status
+    // shows where the partner leaves the domain. Such points are lifted again from a nontrivial real partner of
+    // their fibre (the domain widened by a quarter, fibre_partners), preferring one inside the domain.
+    if (eq.self_intersection())
+      for (std::size_t i = 0; i < arc.points.size(); ++i) {
+        const Locus_point& p = arc.points[i];
+        if (std::fabs(p.partner[0]) + std::fabs(p.partner[1]) > 1e-9) continue;
+        const std::array<double, 2>* seed = nullptr;
+        const auto F = fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, e.polyline[i], nullptr);
+        for (const auto& y : F) {
+          if (std::fabs(y[0]) + std::fabs(y[1]) <= 1e-9) continue;
+          if (!seed || partner_in_domain(eq, o.partner_domain, false, e.polyline[i], y, 1e-12)) seed = &y;
+        }
+        if (!seed) continue;
+        const Locus_point q = lift_point(e.polyline[i][0], e.polyline[i][1], seed);
+        if (verified(q) && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) > 1e-9) arc.points[i] = q;
+      }
     std::vector<std::pair<std::size_t, Partner_domain_crossing>> found;
     for (std::size_t i = 0; i + 1 < arc.points.size(); ++i) {
       const Locus_point &p = arc.points[i], &q = arc.points[i + 1];
@@ -860,6 +879,29 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
         q.genuine = c.point_status[i] == Partner_status::genuine;
         if (q.genuine) q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
       }
+  }
+}
+
+// Arcs on a rational line with one rational partner all along (the double line of an extruded loop): every point
+// proved genuine at once, exactly (lifting/constant_partner_lines.h), where the interval proofs leave the spans at
+// the box's sides open. `degree_bound`: the sum of both patches' degrees in u and v.
+inline void prove_constant_partner_lines(Surface_locus& L, const Partner_equations& eq,
+                                         const Surface_intersection_options& o, int degree_bound) {
+  if (L.topology_method != "subdivision") return;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    if (arc.undecided_fraction == 0) continue;
+    std::vector<std::array<double, 2>> partner;
+    for (const Locus_point& q : arc.points) partner.push_back(q.partner);
+    const auto y = constant_partner_of_line(L.topology.edges[k], partner, eq, o.partner_domain,
+                                            o.partner_domain_unbounded, degree_bound);
+    if (!y) continue;
+    const Double_interval Y1 = Double_interval::of((*y)[0]), Y2 = Double_interval::of((*y)[1]);
+    for (Locus_point& q : arc.points) {
+      q.genuine = q.status_proved = true;
+      q.partner_enclosure = {{{Y1.lo, Y1.hi}, {Y2.lo, Y2.hi}}};
+    }
+    arc.undecided_fraction = 0;
   }
 }
 
@@ -1256,6 +1298,8 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
+  internal::prove_constant_partner_lines(L, internal::Partner_equations(patch), o,
+                                         2 * (patch.degree_u() + patch.degree_v()));
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
@@ -1444,6 +1488,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
+  internal::prove_constant_partner_lines(L, internal::Partner_equations(phi, psi), o,
+                                         phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   if (!o.partner_domain_unbounded)
     for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)

@@ -186,7 +186,8 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
   // image_inflation is false) on the image alone: where one unknown depends on another quadratically (at a fold of
   // the partner, u ~ 1 - s^2), the image of that unknown grows with the width of the other, and only the image lets
   // the other shrink to its range
-  for (int mode = 0; mode < (image_inflation ? 2 : 1); ++mode) {
+  bool narrows = false;  // the first image narrower than W in some coordinate (as at a fold); else only the hull
+  for (int mode = 0; mode < (image_inflation && narrows ? 2 : 1); ++mode) {
     W = start;
     for (int attempt = 0; attempt < 4; ++attempt) {
       std::array<D, 3> image, trial = W;
@@ -195,6 +196,8 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
         return true;
       }
       if (!(std::isfinite(image[0].lo) && std::isfinite(image[0].hi))) return false;
+      if (mode == 0 && attempt == 0)
+        for (int c = 0; c < 3; ++c) narrows = narrows || image[c].hi - image[c].lo < 0.75 * (W[c].hi - W[c].lo);
       for (int c = 0; c < 3; ++c) {
         const double lo = mode == 0 ? std::min(W[c].lo, image[c].lo) : image[c].lo;
         const double hi = mode == 0 ? std::max(W[c].hi, image[c].hi) : image[c].hi;
