@@ -1639,7 +1639,7 @@ TEST_CASE("structured surfaces: an extruded loop's double line, straight and she
     for (const auto& a : L.arcs) {
       // every partner and every status proved; straight, k = 0 all along, and next to the box's sides v = 0 and
       // v = 1 the point P = (u, v + k) is within rounding of the side: the exact proof of a line with one partner
-      // (lifting/constant_partner_lines.h) decides the whole arc
+      // (lifting/linear_partner_lines.h) decides the whole arc
       CHECK(a.fibre_undecided_fraction == 0);
       CHECK(a.undecided_fraction == 0);
       for (const auto& q : a.points)

@@ -24,7 +24,7 @@
 #include <bezoutian/topology/Curve_topology_by_subdivision.h>
 #include <bezoutian/intersection/internal/box_edge_lines.h>
 #include <bezoutian/lifting/certified_lifting.h>
-#include <bezoutian/lifting/constant_partner_lines.h>
+#include <bezoutian/lifting/linear_partner_lines.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/floating_null_vector.h>
 #include <bezoutian/topology/matrix_zero_points.h>
@@ -882,22 +882,28 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   }
 }
 
-// Arcs on a rational line with one rational partner all along (the double line of an extruded loop): every point
-// proved genuine at once, exactly (lifting/constant_partner_lines.h), where the interval proofs leave the spans at
-// the box's sides open. `degree_bound`: the sum of both patches' degrees in u and v.
-inline void prove_constant_partner_lines(Surface_locus& L, const Partner_equations& eq,
-                                         const Surface_intersection_options& o, int degree_bound) {
+// Arcs on a rational line whose partner is affine in the point with rational coefficients (the double line of an
+// extruded loop, two extrusions along one direction): every point proved genuine at once, exactly
+// (lifting/linear_partner_lines.h), where the interval proofs leave the spans at the box's sides open. A traced
+// point where the partner is the trivial one (a pinch point of a self-intersection) keeps its own status.
+// `degree_bound`: the sum of both patches' degrees in u and v.
+inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations& eq,
+                                       const Surface_intersection_options& o, int degree_bound) {
   if (L.topology_method != "subdivision") return;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     if (arc.undecided_fraction == 0) continue;
     std::vector<std::array<double, 2>> partner;
     for (const Locus_point& q : arc.points) partner.push_back(q.partner);
-    const auto y = constant_partner_of_line(L.topology.edges[k], partner, eq, o.partner_domain,
-                                            o.partner_domain_unbounded, degree_bound);
+    const Curve_topology_edge& e = L.topology.edges[k];
+    const auto y = linear_partner_of_line(e, partner, eq, o.partner_domain, o.partner_domain_unbounded, degree_bound);
     if (!y) continue;
-    const Double_interval Y1 = Double_interval::of((*y)[0]), Y2 = Double_interval::of((*y)[1]);
-    for (Locus_point& q : arc.points) {
+    const int g = e.pieces.front().graph_axis;
+    for (std::size_t i = 0; i < arc.points.size(); ++i) {
+      const std::array<Rational, 2> p = y->at(Rational(e.polyline[i][std::size_t(g)]));
+      if (eq.self_intersection() && CGAL::is_zero(p[0]) && CGAL::is_zero(p[1])) continue;
+      const Double_interval Y1 = Double_interval::of(p[0]), Y2 = Double_interval::of(p[1]);
+      Locus_point& q = arc.points[i];
       q.genuine = q.status_proved = true;
       q.partner_enclosure = {{{Y1.lo, Y1.hi}, {Y2.lo, Y2.hi}}};
     }
@@ -1298,8 +1304,8 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
-  internal::prove_constant_partner_lines(L, internal::Partner_equations(patch), o,
-                                         2 * (patch.degree_u() + patch.degree_v()));
+  internal::prove_linear_partner_lines(L, internal::Partner_equations(patch), o,
+                                       2 * (patch.degree_u() + patch.degree_v()));
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
@@ -1488,8 +1494,8 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
-  internal::prove_constant_partner_lines(L, internal::Partner_equations(phi, psi), o,
-                                         phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
+  internal::prove_linear_partner_lines(L, internal::Partner_equations(phi, psi), o,
+                                       phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   if (!o.partner_domain_unbounded)
     for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)
