@@ -1679,6 +1679,55 @@ TEST_CASE("structured surfaces: an extruded loop's double line, straight and she
   }
 }
 
+TEST_CASE("structured surfaces: a Whitney umbrella's double line, an affine partner, trivial at the pinch point",
+          "[surface][structured][self]") {
+  // Phi(u, v) = (a^2, v, a (v - 1/3)) with a = 3u/5 - 3/10: Phi(u, v) = Phi(u', v') with (u', v') != (u, v) iff
+  // v = v' = 1/3 and u' = 1 - u. The double curve is the line v = 1/3 across the whole square, with the partner
+  // (l, k) = (1 - 2u, 0), trivial only at the pinch point (1/2, 1/3); its 3D image is (a^2, 1/3, 0), a in [0, 3/10].
+  const std::string a = "(3*u/5 - 3/10)";
+  Surface_intersection_options fine;
+  fine.polyline_tolerance = 1e-4;
+  const Surface_locus L = self_intersection_locus(power_patch(a + "^2", "v", a + "*(v - 1/3)", "1", 2, 1), fine);
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  CHECK(L.pinch_points_complete);
+  REQUIRE(L.pinch_points.size() == 1);
+  REQUIRE(L.arcs.size() == 1);
+  const auto& arc = L.arcs[0];
+  // every status proved at once by the exact proof of a line with an affine partner (lifting/linear_partner_lines.h),
+  // but the pinch point's own traced point
+  CHECK(arc.undecided_fraction == 0);
+  std::size_t proved = 0, pinch = 0;
+  for (const auto& q : arc.points) {
+    CHECK(std::fabs(q.projection[1] - 1.0 / 3) < 1e-12);
+    if (std::fabs(q.projection[0] - 0.5) < 1e-12) {
+      ++pinch;
+      continue;
+    }
+    CHECK(q.genuine);
+    CHECK(q.status_proved);
+    const double l = 1 - 2 * q.projection[0];  // the closed-form partner
+    CHECK(q.partner_enclosure[0][0] <= l + 1e-15);
+    CHECK(l - 1e-15 <= q.partner_enclosure[0][1]);
+    CHECK(q.partner_enclosure[1][0] == 0);
+    CHECK(q.partner_enclosure[1][1] == 0);
+    proved += q.status_proved;
+  }
+  CHECK(pinch <= 1);
+  CHECK(proved + pinch == arc.points.size());
+  // completeness: 2001 samples of the double curve with both preimages, against the sheets
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  for (int i = 0; i <= 2000; ++i) {
+    const double u = i / 2000.0, c = 0.6 * u - 0.3;
+    samples.push_back({std::array<double, 3>{u, 1.0 / 3, 0}, std::array<double, 3>{c * c, 1.0 / 3, 0},
+                       std::array<double, 3>{1 - u, 1.0 / 3, 0}});
+  }
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < 1e-3);
+  CHECK(gap[1] < 1e-3);
+  CHECK(gap[2] < 1e-3);
+}
+
 TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one line that meet at a fold",
           "[surface][structured][sheets]") {
   // sphere patch: latitude a = u/2, longitude b = 1/2 + 3v/2, (cos, sin) = (1 - a^2, 2a)/(1 + a^2); the plane
