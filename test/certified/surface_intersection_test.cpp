@@ -1545,6 +1545,15 @@ std::array<double, 3> worst_sheet_gap(const Surface_locus& L,
     }
   return worst;
 }
+
+/// Completeness: every sample lies within `tolerance` of a sheet's polyline, in both parameter domains and in 3D.
+void check_sheets_complete(const Surface_locus& L, const std::vector<std::array<std::array<double, 3>, 3>>& samples,
+                           double tolerance) {
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < tolerance);  // (u, v)
+  CHECK(gap[1] < tolerance);  // 3D
+  CHECK(gap[2] < tolerance);  // (s, t)
+}
 }  // namespace
 
 TEST_CASE("structured surfaces: two cylinders crossing, both branches over one projected arc are lifted",
@@ -1672,10 +1681,7 @@ TEST_CASE("structured surfaces: an extruded loop's double line, straight and she
       samples.push_back({a, x, b});
       samples.push_back({b, x, a});
     }
-    const auto gap = worst_sheet_gap(L, samples);
-    CHECK(gap[0] < 1e-3);
-    CHECK(gap[1] < 1e-3);
-    CHECK(gap[2] < 1e-3);
+    check_sheets_complete(L, samples, 1e-3);
   }
 }
 
@@ -1722,10 +1728,7 @@ TEST_CASE("structured surfaces: a Whitney umbrella's double line, an affine part
     samples.push_back({std::array<double, 3>{u, 1.0 / 3, 0}, std::array<double, 3>{c * c, 1.0 / 3, 0},
                        std::array<double, 3>{1 - u, 1.0 / 3, 0}});
   }
-  const auto gap = worst_sheet_gap(L, samples);
-  CHECK(gap[0] < 1e-3);
-  CHECK(gap[1] < 1e-3);
-  CHECK(gap[2] < 1e-3);
+  check_sheets_complete(L, samples, 1e-3);
 }
 
 TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one line that meet at a fold",
