@@ -1582,10 +1582,10 @@ TEST_CASE("structured surfaces: two cylinders crossing, both branches over one p
   CHECK(corner_splits == 1);
   for (const auto& a : L.arcs) {
     // every partner proved found, up to the corner (1, 1) where the two branches meet in a fold of the partner
-    // (lifting/internal/partner_fold_proofs.h); the statuses but for about a hundred ulps beside the fold and the
-    // exact split point
+    // (lifting/internal/partner_fold_proofs.h); every status, beside the exact split point by the monotone partner
+    // coordinates (lifting/internal/exact_point_spans.h)
     CHECK(a.fibre_undecided_fraction == 0);
-    CHECK(a.undecided_fraction < 1e-12);
+    CHECK(a.undecided_fraction == 0);
     for (const auto& s : a.sheets) {
       ++sheets;
       for (const auto& q : s.points) {
@@ -2294,7 +2294,7 @@ TEST_CASE("Viviani: both branches through the tangent point are complete, the fi
   CHECK(gap[2] < 5e-3);  // cylinder (u, v)
 }
 
-TEST_CASE("torus and a bitangent plane: the arc of a Villarceau circle, statuses proved up to the tangent point",
+TEST_CASE("torus and a bitangent plane: the arc of a Villarceau circle, certified up to the tangent point",
           "[surface][structured][sheets]") {
   // torus R = 5, r = 3: tube angle theta = 2 atan((2u - 1)/2), angle about the z axis phi = 2 atan(v); the
   // bitangent plane z = 3x/4 as (8u, 8v, 6u). Inside both patches the intersection is the arc of the Villarceau
@@ -2311,10 +2311,12 @@ TEST_CASE("torus and a bitangent plane: the arc of a Villarceau circle, statuses
   REQUIRE(L.topology_computed);
   std::size_t sheets = 0;
   for (const auto& arc : L.arcs) {
-    // the spans next to the tangent point are halved towards it; what stays open is where the arc comes within
-    // rounding of the box's side t = 1 (it touches the side there), about 3e-7 of each arc
-    CHECK(arc.undecided_fraction < 1e-5);
-    CHECK(arc.fibre_undecided_fraction < 1e-5);
+    // the spans next to the tangent point are halved towards it; where the arc comes within rounding of the box's
+    // side t = 1 (it touches the side there) the curve equation anchors the partner (lifting/internal/curve_anchor.h)
+    // and the partner's monotone coordinates give the status (the partner is the plane's corner (1, 0) there:
+    // lifting/internal/exact_point_spans.h)
+    CHECK(arc.undecided_fraction == 0);
+    CHECK(arc.fibre_undecided_fraction == 0);
     for (const auto& s : arc.sheets) {
       ++sheets;
       for (const auto& q : s.points) {

@@ -947,6 +947,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
     // the projections of the arc's certified split points, and of its points whose partner lies exactly on the
     // partner domain's boundary (a few ulps wide: the halving towards them ends inside)
     std::vector<std::array<Double_interval, 2>> split_boxes;
+    std::vector<Partner_boundary_point> exact_points;
     for (const Locus_split_point& sp : L.split_points)
       if (sp.arc == k)
         split_boxes.push_back({Double_interval{sp.box[0][0], sp.box[0][1]}, Double_interval{sp.box[1][0], sp.box[1][1]}});
@@ -964,6 +965,12 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
             b[std::size_t(d)] = Double_interval{x.lo - r, x.hi + r};
           }
           split_boxes.push_back(b);
+          exact_points.push_back(*c);
+          // the point's other partners on the boundary (two cylinders: the corners (1, 1) and (0, 0) over one point)
+          for (const auto& y : fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, q.projection, nullptr))
+            if (std::fabs(y[0] - q.partner[0]) + std::fabs(y[1] - q.partner[1]) > 1e-6)
+              if (const auto d = exact_boundary_point(eq, o.partner_domain, q.projection, y))
+                if (d->x == c->x && d->y != c->y) exact_points.push_back(*d);
         }
     // the certified boxes of the arc's ends where branches of D = 0 meet: singular points inside the domain or on
     // its side, points of the side where two arcs end
@@ -1011,7 +1018,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
                                o.max_refinement_points - inserted);
       }
       return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes,
-                                   chains, singular_boxes);
+                                   chains, singular_boxes, &L.equation.square_free, exact_points);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {

@@ -27,6 +27,7 @@
 
 #include <bezoutian/lifting/certified_lifting.h>
 #include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/internal/exact_point_spans.h>
 #include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/internal/partner_fold_proofs.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
@@ -246,7 +247,8 @@ inline std::vector<Partner_sheet> chain_sheets(const std::vector<std::vector<std
 inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_box& domain, const Parameter_box& cell,
                                  int axis, const Double_interval& T, double oa, double ob,
                                  const std::vector<std::array<std::array<double, 2>, 2>>& ends,
-                                 std::vector<std::array<Double_interval, 3>>& K, Exclusion_budget& budget) {
+                                 std::vector<std::array<Double_interval, 3>>& K, Exclusion_budget& budget,
+                                 const Polynomial_2<Integer>* curve = nullptr) {
   using D = Double_interval;
   const double len = T.hi - T.lo;
   const double room = 0.5 * std::fabs(ob - oa) + 0.25 * len + 1e-12;
@@ -282,7 +284,7 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
       W = first;
       proved = prove_zero_curve(eq, axis, T, W, K[j]);
     }
-    if (!proved || !zero_curve_anchored(eq, axis, T, W, cell)) return false;
+    if (!proved || !zero_curve_anchored(eq, axis, T, W, cell, curve)) return false;
     if (eq.self_intersection() && K[j][1].contains_zero() && K[j][2].contains_zero()) return false;
     const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
     holes.push_back({hole[1], hole[2]});
@@ -444,7 +446,9 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
                                          Exclusion_budget& budget,
                                          const std::vector<std::array<Double_interval, 2>>& split_boxes = {},
                                          const Half_branch_chains* chains = nullptr,
-                                         const std::vector<std::array<Double_interval, 2>>& singular_boxes = {}) {
+                                         const std::vector<std::array<Double_interval, 2>>& singular_boxes = {},
+                                         const Polynomial_2<Integer>* curve = nullptr,
+                                         const std::vector<Partner_boundary_point>& exact_points = {}) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
@@ -503,6 +507,13 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       }
       const double oa = e.polyline[i][other], ob = e.polyline[i + 1][other];
       const bool increasing = a.mid() <= b.mid();
+      std::vector<const Partner_boundary_point*> span_exact_points;  // in the cell, over the span
+      for (const Partner_boundary_point& x : exact_points) {
+        const D tx = D::of(x.x[std::size_t(axis)]);
+        if (T.lo <= tx.hi && tx.lo <= T.hi && pc.cell.u0 <= x.x[0] && x.x[0] <= pc.cell.u1 && pc.cell.v0 <= x.x[1] &&
+            x.x[1] <= pc.cell.v1)
+          span_exact_points.push_back(&x);
+      }
       struct Span {
         double f0, f1;  // the span's part, as fractions from point i to point i + 1
         int depth;
@@ -526,16 +537,31 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
                           std::array<double, 2>{at(sp.f1, ya[0], yb[0]), at(sp.f1, ya[1], yb[1])}});
         }
         std::vector<std::array<D, 3>> K;
-        if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget)) {
+        if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget, curve)) {
           // (the arc points over Ts lie in the cell: their other coordinate in K_j's range and the cell's)
           for (auto& k : K) k[0] = D{std::max(k[0].lo, cell_other.lo), std::min(k[0].hi, cell_other.hi)};
           // every partner in the domain is in some K_j: genuine if one K_j lies inside the domain, phantom if every
           // K_j lies outside it (then no partner is in the domain), else open
-          bool genuine = false, outside = true;
-          for (const auto& k : K) {
-            const Partner_status st = status_from_partner(eq, domain, false, axis, Ts, k, nullptr, true);
-            genuine = genuine || st == Partner_status::genuine;
-            outside = outside && st == Partner_status::outside;
+          std::vector<Partner_status> status;
+          for (const auto& k : K) status.push_back(status_from_partner(eq, domain, false, axis, Ts, k, nullptr, true));
+          auto decided = [&](bool& genuine, bool& outside) {
+            genuine = false, outside = true;
+            for (const Partner_status st : status) {
+              genuine = genuine || st == Partner_status::genuine;
+              outside = outside && st == Partner_status::outside;
+            }
+          };
+          bool genuine, outside;
+          decided(genuine, outside);
+          // next to an exact point with its partner on the domain's boundary, by monotonicity (exact_point_spans.h)
+          for (const Partner_boundary_point* x : span_exact_points) {
+            if (genuine || outside) break;
+            for (std::size_t j = 0; j < K.size(); ++j)
+              if (status[j] == Partner_status::undecided) {
+                const Partner_status st = status_beside_exact_point(eq, domain, axis, Ts, K[j], *x);
+                if (st != Partner_status::undecided) status[j] = st;
+              }
+            decided(genuine, outside);
           }
           if (!genuine && !outside) {
             // a sheet crosses the domain's side over Ts, or its enclosure reaches over it: halved up to six times,
@@ -561,20 +587,22 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
               Partner_sheet& S = out.sheets[active[j]];
               const std::size_t k = (end == 0 ? i : i + 1) - S.first;
               S.enclosure[k] = {K[j][1], K[j][2]};
-              S.genuine_proved[k] = status_from_partner(eq, domain, false, axis, Ts, K[j], nullptr, true) ==
-                                    Partner_status::genuine;
+              S.genuine_proved[k] = status[j] == Partner_status::genuine;
             }
           }
           continue;
         }
         // a span that reaches a singular point of D = 0 (where both branches meet and the Jacobian of the span
         // proof is singular) is halved towards it: the halves away from it have about the conditioning of the
-        // first, so they are proved down to the point's own certified box, which is not counted
+        // first, so they are proved down to the point's own certified box, which is not counted; so is the box of an
+        // exact point with its partner on the domain's boundary (a split box of a few ulps)
         bool inside_point = false, meets_point = false;
-        for (const auto& g : singular_boxes) {
-          inside_point = inside_point || (g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi);
-          meets_point = meets_point || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
-        }
+        for (const auto* boxes : {&singular_boxes, &split_boxes})
+          for (const auto& g : *boxes) {
+            const bool inside = g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi;
+            inside_point = inside_point || (inside && (boxes == &singular_boxes || g[axis].hi - g[axis].lo <= 1e-12));
+            meets_point = meets_point || (boxes == &singular_boxes && Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
+          }
         if (inside_point) continue;
         const double m = 0.5 * (sp.f0 + sp.f1);
         // (at most 256 halvings beyond the third per edge: next to a point where the arc comes within rounding of

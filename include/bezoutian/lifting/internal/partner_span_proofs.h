@@ -10,6 +10,7 @@
 
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
+#include <bezoutian/lifting/internal/curve_anchor.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/partner_domain_crossings.h>
 #include <bezoutian/arithmetic/number_types.h>
@@ -20,6 +21,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace bezoutian {
@@ -235,14 +237,36 @@ inline std::array<Double_interval, 3> widened_unique_box(const Eq& eq, int axis,
 /// The anchor of a zero curve proved unique in W over the span T (prove_zero_curve): Krawczyk's test at the single
 /// value t* = mid T encloses gamma(t*) strictly inside the cell's range of the other coordinate, where the line
 /// through t* meets D = 0 only at the arc point; so gamma(t*) is the arc point (classify_partner_span, step 2).
+/// Where the enclosure reaches over one side of the cell and `curve` (the projection operator D) is given, the
+/// curve equation puts gamma(t*) inside (curve_anchor.h; not where gamma may be the trivial partner of a
+/// self-intersection, which is not on D = 0).
 template <class Eq>
 inline bool zero_curve_anchored(const Eq& eq, int axis, const Double_interval& T, const std::array<Double_interval, 3>& W,
-                                const Parameter_box& cell) {
+                                const Parameter_box& cell, const Polynomial_2<Integer>* curve = nullptr) {
   std::array<Double_interval, 3> at = W;
   const Double_interval t{T.mid(), T.mid()};
   if (!parametric_partner_krawczyk(eq, axis, t, at, nullptr, false)) return false;
   const Rational &lo = axis == 0 ? cell.v0 : cell.u0, &hi = axis == 0 ? cell.v1 : cell.u1;
-  return Rational(at[0].lo) > lo && Rational(at[0].hi) < hi;
+  auto inside = [&] { return Rational(at[0].lo) > lo && Rational(at[0].hi) < hi; };
+  if (inside()) return true;
+  if (!curve) return false;
+  // the enclosure contracted first (Krawczyk's image holds every zero in the box: each success may replace it)
+  for (int it = 0; it < 8; ++it) {
+    std::array<Double_interval, 3> next = at;
+    const double width = at[0].hi - at[0].lo;
+    if (!parametric_partner_krawczyk(eq, axis, t, next, nullptr, false)) break;
+    at = next;
+    if (inside()) return true;
+    if (!(at[0].hi - at[0].lo < 0.5 * width)) break;
+  }
+  const Rational g_lo(at[0].lo), g_hi(at[0].hi);
+  const bool above_lo = g_lo > lo, below_hi = g_hi < hi;
+  if constexpr (!std::is_same<Eq, Partner_equations>::value) return false;  // (blown-up: r = 0 is not on D = 0)
+  else if (above_lo == below_hi || (eq.self_intersection() && at[1].contains_zero() && at[2].contains_zero()))
+    return false;
+  const Rational t_star(t.lo);
+  return below_hi ? g_hi > lo && curve_has_no_zero_beyond(*curve, axis, t_star, lo, g_lo)
+                  : g_lo < hi && curve_has_no_zero_beyond(*curve, axis, t_star, hi, g_hi);
 }
 
 /// The status given by a partner enclosure K_y of the arc points over T whose other coordinate lies in K_v
@@ -351,6 +375,50 @@ inline Partner_status classify_span_near_trivial_partner(const Blown_up_partner_
   return Partner_status::genuine;
 }
 
+/// An enclosure X of the derivative gamma'(t) = -(dE/dw)^-1 dE/dt of a zero curve over T x K (w = the other
+/// coordinate and the partner, the unknowns of the span proofs): Cramer's rule in interval arithmetic on the system
+/// preconditioned by the inverse C of the Jacobian's midpoint (M = C dE/dw is close to the identity, so det M keeps
+/// its sign), gamma'_c = -det(M_c) / det(M), M_c being M with column c replaced by C dE/dt. False if det M may vanish.
+inline bool implicit_slopes(const Partner_equations& eq, int axis, const Double_interval& T,
+                            const std::array<Double_interval, 3>& K, std::array<Double_interval, 3>& X) {
+  using D = Double_interval;
+  const int q[3] = {1 - axis, 2, 3};
+  std::array<D, 4> z;
+  z[axis] = T;
+  for (int c = 0; c < 3; ++c) z[q[c]] = K[c];
+  std::array<D, 3> E;
+  std::array<std::array<D, 4>, 3> J;
+  eq.evaluate(z, E, &J);
+  double A[3][3], C[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
+  if (!invert_3x3(A, C)) return false;
+  std::array<std::array<D, 3>, 3> M;  // C dE/dw, close to the identity
+  std::array<D, 3> rhs;               // C dE/dt
+  for (int r = 0; r < 3; ++r) {
+    rhs[r] = D{0, 0};
+    for (int l = 0; l < 3; ++l) rhs[r] = rhs[r] + D{C[r][l], C[r][l]} * J[l][axis];
+    for (int c = 0; c < 3; ++c) {
+      M[r][c] = D{0, 0};
+      for (int l = 0; l < 3; ++l) M[r][c] = M[r][c] + D{C[r][l], C[r][l]} * J[l][q[c]];
+    }
+  }
+  auto det3 = [](const std::array<std::array<D, 3>, 3>& a) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const D det = det3(M);
+  if (det.contains_zero() || !std::isfinite(det.lo) || !std::isfinite(det.hi)) return false;
+  const D inverse_det = D::widen(1 / det.hi, 1 / det.lo);  // 1/x decreases on an interval without 0
+  for (int c = 0; c < 3; ++c) {
+    std::array<std::array<D, 3>, 3> Mc = M;
+    for (int r = 0; r < 3; ++r) Mc[r][c] = rhs[r];
+    X[c] = D{0, 0} - det3(Mc) * inverse_det;
+    if (!std::isfinite(X[c].lo) || !std::isfinite(X[c].hi)) return false;
+  }
+  return true;
+}
+
 /// Status of the arc points over a span T that ends at a certified split point (partner_domain_crossings.h) whose
 /// graph interval lies in T. There the followed partner is on the domain's boundary, so its enclosure K straddles
 /// the boundary line and classify_partner_span cannot decide. Instead:
@@ -383,44 +451,18 @@ inline Partner_status classify_span_at_split(const Partner_equations& eq, const 
     if (!(W[c].lo <= split.box[q[c]].lo && split.box[q[c]].hi <= W[c].hi)) return no;
   if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return no;
   // 2. the sign of dG/dt over T x K
+  std::array<D, 3> slope;
+  if (!implicit_slopes(eq, axis, T, K, slope)) return no;
   std::array<D, 4> z;
   z[axis] = T;
   for (int c = 0; c < 3; ++c) z[q[c]] = K[c];
-  std::array<D, 3> E;
-  std::array<std::array<D, 4>, 3> J;
-  eq.evaluate(z, E, &J);
-  double A[3][3], C[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) A[r][c] = J[r][q[c]].mid();
-  if (!invert_3x3(A, C)) return no;
-  std::array<std::array<D, 3>, 3> M;  // C dE/dw, close to the identity
-  std::array<D, 3> rhs;               // C dE/dt
-  for (int r = 0; r < 3; ++r) {
-    rhs[r] = D{0, 0};
-    for (int l = 0; l < 3; ++l) rhs[r] = rhs[r] + D{C[r][l], C[r][l]} * J[l][axis];
-    for (int c = 0; c < 3; ++c) {
-      M[r][c] = D{0, 0};
-      for (int l = 0; l < 3; ++l) M[r][c] = M[r][c] + D{C[r][l], C[r][l]} * J[l][q[c]];
-    }
-  }
-  auto det3 = [](const std::array<std::array<D, 3>, 3>& a) {
-    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-  };
-  const D det = det3(M);
-  if (det.contains_zero()) return no;
-  const D inverse_det = D::widen(1 / det.hi, 1 / det.lo);  // 1/x decreases on an interval without 0
   const Partner_domain_side& side = split.side;
   auto grad = [&](int i) {
     const double d = side.point == 0 ? eq.dP(side.coordinate, i) : eq.dQ(side.coordinate, i);
     return D{d, d};
   };
   D dG = grad(axis);
-  for (int c = 0; c < 3; ++c) {
-    std::array<std::array<D, 3>, 3> Mc = M;
-    for (int r = 0; r < 3; ++r) Mc[r][c] = rhs[r];
-    dG = dG - grad(q[c]) * (det3(Mc) * inverse_det);  // gamma'_c = -det(M_c) / det(M)
-  }
+  for (int c = 0; c < 3; ++c) dG = dG + grad(q[c]) * slope[c];
   if (dG.contains_zero() || !std::isfinite(dG.lo) || !std::isfinite(dG.hi)) return no;
   const int far_sign = (dG.lo > 0 ? 1 : -1) * (split_at_low_end ? 1 : -1);  // sign of G - bound beyond the split
   const bool lower = side.bound == (side.coordinate == 0 ? domain.u0 : domain.v0);
