@@ -26,6 +26,42 @@
 namespace bezoutian {
 namespace internal {
 
+/// The sign (1, -1, or 0 if not proved) of F(t) = w_c(t) - w_c(t_e) for every t in T, where w(t) is the zero curve
+/// unique in W over Tp = hull(T, t_e) (Kp: its enclosure over Tp) and T lies on the side `side` of t_e, by the
+/// integral of F' = w_c' over Tp cut into 32 pieces P_k from t_e outwards: for t in P_m,
+/// F(t) = side * (sum_{k<m} |P_k cap [t, t_e]| S_k + |P_m cap [t, t_e]| S_m) with S_k an enclosure of w_c' over P_k
+/// (implicit_slopes on P_k's Krawczyk image) and each length |P_k| exactly for the pieces between, in [0, |P_k|]
+/// for the piece holding t_e and for P_m. Where the partner touches the side and turns back, w_c' vanishes at t_e
+/// and no one enclosure over Tp has a sign; the sum keeps the sign of -(t - t_e)^2 while the pieces' enclosures are
+/// tighter than their distance to t_e.
+inline int sign_by_integrated_slope(const Partner_equations& eq, int axis, const Double_interval& Tp,
+                                    const std::array<Double_interval, 3>& W, const std::array<Double_interval, 3>& Kp,
+                                    const Double_interval& T, const Rational& t_e, int side, int c) {
+  using D = Double_interval;
+  const int N = 32;
+  auto bound = [&](int i) { return i == 0 ? Tp.lo : (i == N ? Tp.hi : Tp.lo + (Tp.hi - Tp.lo) * i / N); };
+  D sum{0, 0};
+  int sign = 0;
+  for (int k = 0; k < N; ++k) {
+    const D P = side < 0 ? D{bound(N - 1 - k), bound(N - k)} : D{bound(k), bound(k + 1)};
+    if (!(P.lo <= P.hi)) return 0;
+    std::array<D, 3> image = W, X;
+    if (!parametric_partner_krawczyk(eq, axis, P, image)) image = Kp;  // (w(P) lies in Kp too)
+    if (!implicit_slopes(eq, axis, P, image, X)) return 0;
+    const D length = D::widen(P.hi - P.lo, P.hi - P.lo);
+    const D partial{0, length.hi};
+    if (Rational(P.hi) >= Rational(T.lo) && Rational(P.lo) <= Rational(T.hi)) {  // P meets T: F over P cap T
+      const D F = D{double(side), double(side)} * (sum + partial * X[c]);
+      const int s = F.lo > 0 ? 1 : (F.hi < 0 ? -1 : 0);
+      if (s == 0 || (sign != 0 && s != sign)) return 0;
+      sign = s;
+    }
+    const bool between = side < 0 ? Rational(P.hi) <= t_e : Rational(P.lo) >= t_e;  // P inside [t, t_e]
+    sum = sum + (between ? length : partial) * X[c];
+  }
+  return sign;
+}
+
 /// The status (genuine, outside or undecided) of the sheet whose zero curve over the span T of a graph piece
 /// (graph coordinate `axis`) is enclosed in K (other coordinate, partner; K's other coordinate inside the cell)
 /// next to the exact point `e` (the header comment). T lies on one side of e's graph coordinate t_e (it may end at
@@ -76,8 +112,10 @@ inline Partner_status status_beside_exact_point(const Partner_equations& eq, con
     if (!(at_lo || at_hi) || (at_lo && Rational(y.hi) > hi) || (at_hi && Rational(y.lo) < lo)) return no;
     if (!slopes && !(slopes = implicit_slopes(eq, axis, Tp, Kp, X))) return no;
     const D& slope = X[1 + c];
-    if (slope.contains_zero()) return no;
-    const int sign = (slope.lo > 0 ? 1 : -1) * side;  // of y_c - beta over T (t != t_e)
+    // the sign of y_c - beta over T (t != t_e)
+    const int sign = !slope.contains_zero() ? (slope.lo > 0 ? 1 : -1) * side
+                                            : sign_by_integrated_slope(eq, axis, Tp, W, Kp, T, t_e, side, 1 + c);
+    if (sign == 0) return no;
     if (at_lo ? sign < 0 : sign > 0) return Partner_status::outside;
     inside = inside && (at_lo ? sign > 0 : sign < 0);
   }
