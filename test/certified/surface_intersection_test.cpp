@@ -2125,11 +2125,11 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   // (the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined
   // pairing); the partner touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact
   // point, proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved by the integrated
-  // slope of the partner (lifting/internal/exact_point_spans.h) but within about 5e-15 of it, where the double
-  // enclosures are wider than the partner's distance to the side, about (t - 1/2)^2
+  // slope of the partner (lifting/internal/exact_point_spans.h; within about 1e-12 of it in 256-bit intervals, where
+  // the double enclosures are wider than the partner's distance to the side, about (t - 1/2)^2)
   for (const auto& a : L.arcs) {
     CHECK(a.fibre_undecided_fraction == 0);
-    CHECK(a.undecided_fraction < 1e-13);
+    CHECK(a.undecided_fraction == 0);
   }
   check_exact_touch_at_centre(L, 1, 1);
   std::size_t sheets = 0;
@@ -2174,9 +2174,9 @@ TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal m
   CHECK(L.equation.generic_rank == 1);  // B is 2 x 2 with a one-dimensional kernel everywhere
   CHECK(L.equation.square_free.degree() == 1);  // D = u - t
   // at x = 0 (u = t = 1/2) the partner (v, s) = (1/4, 0) touches the side s = 0 (y = 0, z = -1/2): an exact point,
-  // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved but within about 5e-15 of
-  // it (the integrated slope of lifting/internal/exact_point_spans.h)
-  for (const auto& a : L.arcs) CHECK(a.undecided_fraction < 1e-13);
+  // proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved (the integrated slope of
+  // lifting/internal/exact_point_spans.h)
+  for (const auto& a : L.arcs) CHECK(a.undecided_fraction == 0);
   check_exact_touch_at_centre(L, 0.25, 0);
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets)

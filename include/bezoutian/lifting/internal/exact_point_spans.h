@@ -17,11 +17,13 @@
 #ifndef BEZOUTIAN_LIFTING_INTERNAL_EXACT_POINT_SPANS_H
 #define BEZOUTIAN_LIFTING_INTERNAL_EXACT_POINT_SPANS_H
 
+#include <bezoutian/arithmetic/mpfi_interval.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
 #include <bezoutian/lifting/partner_boundary_points.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace bezoutian {
 namespace internal {
@@ -58,6 +60,111 @@ inline int sign_by_integrated_slope(const Partner_equations& eq, int axis, const
     }
     const bool between = side < 0 ? Rational(P.hi) <= t_e : Rational(P.lo) >= t_e;  // P inside [t, t_e]
     sum = sum + (between ? length : partial) * X[c];
+  }
+  return sign;
+}
+
+/// sign_by_integrated_slope in 256-bit interval arithmetic (MPFI), for a span within about 1e-12 of t_e, where the
+/// double enclosures (about 1e-14 wide) are wider than the partner's distance to the side, about (t - t_e)^2: 16
+/// pieces with rational ends; w(P_k) enclosed by three Krawczyk steps from W (each image intersected with the box:
+/// it holds every zero there), w_c' over P_k by Cramer's rule on the preconditioned system.
+inline int sign_by_integrated_slope_mpfi(const Partner_equations& eq, int axis, const Double_interval& Tp,
+                                         const std::array<Double_interval, 3>& W, const Double_interval& T,
+                                         const Rational& t_e, int side, int c) {
+  using M = Mpfi_interval;
+  using Cx = Partner_equations::Cx;
+  const mpfr_prec_t prec = 256;
+  const int N = 16, q[3] = {1 - axis, 2, 3};
+  const M zero = M::point(0, prec);
+  // E and dE/dz over (t, w), real; false if a weight may vanish
+  auto evaluate = [&](const M& t, const std::array<M, 3>& w, std::array<M, 3>& E, std::array<std::array<M, 4>, 3>& J) {
+    std::array<Cx, 4> z{Cx{zero, zero}, Cx{zero, zero}, Cx{zero, zero}, Cx{zero, zero}};
+    z[std::size_t(axis)] = Cx{t, zero};
+    for (int k = 0; k < 3; ++k) z[std::size_t(q[k])] = Cx{w[std::size_t(k)], zero};
+    std::array<Cx, 3> Ec{Cx{zero, zero}, Cx{zero, zero}, Cx{zero, zero}};
+    const Cx zc{zero, zero};
+    std::array<std::array<Cx, 4>, 3> Jc{std::array<Cx, 4>{zc, zc, zc, zc}, std::array<Cx, 4>{zc, zc, zc, zc},
+                                        std::array<Cx, 4>{zc, zc, zc, zc}};
+    std::array<Cx, 2> weights{Cx{zero, zero}, Cx{zero, zero}};
+    eq.evaluate(z, Ec, Jc, weights);
+    if (weights[0].re.contains_zero() || weights[1].re.contains_zero()) return false;
+    for (int r = 0; r < 3; ++r) {
+      E[std::size_t(r)] = Ec[std::size_t(r)].re;
+      for (int i = 0; i < 4; ++i) J[std::size_t(r)][std::size_t(i)] = Jc[std::size_t(r)][std::size_t(i)].re;
+    }
+    return true;
+  };
+  auto point = [&](const Rational& x) { return M::hull(x, x, prec); };
+  const Rational lo(Tp.lo), hi(Tp.hi);
+  auto bound = [&](int i) { return lo + (hi - lo) * Rational(i) / Rational(N); };
+  std::array<M, 3> Wm{zero, zero, zero};
+  for (int k = 0; k < 3; ++k) Wm[std::size_t(k)] = M::hull(Rational(W[std::size_t(k)].lo), Rational(W[std::size_t(k)].hi), prec);
+  M sum = zero;
+  int sign = 0;
+  for (int k = 0; k < N; ++k) {
+    const Rational a = side < 0 ? bound(N - 1 - k) : bound(k), b = side < 0 ? bound(N - k) : bound(k + 1);
+    const M P = M::hull(a, b, prec), tm = point((a + b) / Rational(2));
+    std::array<M, 3> B = Wm, E{zero, zero, zero};
+    std::array<std::array<M, 4>, 3> J{std::array<M, 4>{zero, zero, zero, zero}, std::array<M, 4>{zero, zero, zero, zero},
+                                      std::array<M, 4>{zero, zero, zero, zero}};
+    double C[3][3];
+    for (int it = 0; it < 3; ++it) {
+      std::array<M, 3> m{B[0].midpoint(), B[1].midpoint(), B[2].midpoint()};
+      std::array<M, 3> Em{zero, zero, zero};
+      std::array<std::array<M, 4>, 3> Jm = J;
+      if (!evaluate(tm, m, Em, Jm) || !evaluate(P, B, E, J)) return 0;
+      double A[3][3];
+      for (int r = 0; r < 3; ++r)
+        for (int cc = 0; cc < 3; ++cc) A[r][cc] = Jm[std::size_t(r)][std::size_t(q[cc])].mid_double();
+      if (!invert_3x3(A, C)) return 0;
+      for (int r = 0; r < 3; ++r) {
+        M x = m[std::size_t(r)], slope = zero;
+        for (int l = 0; l < 3; ++l) {
+          x = x - C[r][l] * Em[std::size_t(l)];
+          slope = slope + C[r][l] * J[std::size_t(l)][std::size_t(axis)];
+        }
+        x = x - slope * (P - tm);
+        for (int cc = 0; cc < 3; ++cc) {
+          M g = M::point(r == cc ? 1.0 : 0.0, prec);
+          for (int l = 0; l < 3; ++l) g = g - C[r][l] * J[std::size_t(l)][std::size_t(q[cc])];
+          x = x + g * (B[std::size_t(cc)] - m[std::size_t(cc)]);
+        }
+        // the image holds every zero in B: B := image cap B
+        const Rational l = std::max(x.lower(), B[std::size_t(r)].lower()), h = std::min(x.upper(), B[std::size_t(r)].upper());
+        if (l > h) return 0;
+        B[std::size_t(r)] = M::hull(l, h, prec);
+      }
+    }
+    if (!evaluate(P, B, E, J)) return 0;
+    // w' = -(dE/dw)^-1 dE/dt over P x B, preconditioned by C
+    std::array<std::array<M, 3>, 3> Mat{std::array<M, 3>{zero, zero, zero}, std::array<M, 3>{zero, zero, zero},
+                                        std::array<M, 3>{zero, zero, zero}};
+    std::array<M, 3> rhs{zero, zero, zero};
+    for (int r = 0; r < 3; ++r)
+      for (int l = 0; l < 3; ++l) {
+        rhs[std::size_t(r)] = rhs[std::size_t(r)] + C[r][l] * J[std::size_t(l)][std::size_t(axis)];
+        for (int cc = 0; cc < 3; ++cc)
+          Mat[std::size_t(r)][std::size_t(cc)] = Mat[std::size_t(r)][std::size_t(cc)] + C[r][l] * J[std::size_t(l)][std::size_t(q[cc])];
+      }
+    auto det3 = [](const std::array<std::array<M, 3>, 3>& x) {
+      return x[0][0] * (x[1][1] * x[2][2] - x[1][2] * x[2][1]) - x[0][1] * (x[1][0] * x[2][2] - x[1][2] * x[2][0]) +
+             x[0][2] * (x[1][0] * x[2][1] - x[1][1] * x[2][0]);
+    };
+    const M det = det3(Mat);
+    if (det.contains_zero()) return 0;
+    std::array<std::array<M, 3>, 3> Mc = Mat;
+    for (int r = 0; r < 3; ++r) Mc[std::size_t(r)][std::size_t(c)] = rhs[std::size_t(r)];
+    const M X = zero - det3(Mc) / det;
+    const Rational len = b - a;
+    const M length = point(len), partial = M::hull(Rational(0), len, prec);
+    if (b >= Rational(T.lo) && a <= Rational(T.hi)) {  // P meets T
+      const M F = double(side) * (sum + partial * X);
+      const int s = F.positive() ? 1 : ((zero - F).positive() ? -1 : 0);
+      if (s == 0 || (sign != 0 && s != sign)) return 0;
+      sign = s;
+    }
+    const bool between = side < 0 ? b <= t_e : a >= t_e;
+    sum = sum + (between ? length : partial) * X;
   }
   return sign;
 }
@@ -113,8 +220,10 @@ inline Partner_status status_beside_exact_point(const Partner_equations& eq, con
     if (!slopes && !(slopes = implicit_slopes(eq, axis, Tp, Kp, X))) return no;
     const D& slope = X[1 + c];
     // the sign of y_c - beta over T (t != t_e)
-    const int sign = !slope.contains_zero() ? (slope.lo > 0 ? 1 : -1) * side
-                                            : sign_by_integrated_slope(eq, axis, Tp, W, Kp, T, t_e, side, 1 + c);
+    int sign = !slope.contains_zero() ? (slope.lo > 0 ? 1 : -1) * side
+                                      : sign_by_integrated_slope(eq, axis, Tp, W, Kp, T, t_e, side, 1 + c);
+    if (sign == 0 && Tp.hi - Tp.lo <= 1e-12 * (1 + std::fabs(Tp.lo)))
+      sign = sign_by_integrated_slope_mpfi(eq, axis, Tp, W, T, t_e, side, 1 + c);
     if (sign == 0) return no;
     if (at_lo ? sign < 0 : sign > 0) return Partner_status::outside;
     inside = inside && (at_lo ? sign > 0 : sign < 0);
