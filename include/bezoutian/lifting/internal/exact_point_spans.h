@@ -12,6 +12,9 @@
 //  2. gamma'(t) over T' x K' (implicit_slopes) encloses the slope of y_c; if it has a sign, y_c(t) - y_e,c has the
 //     sign of gamma'_c (t - t_e) on T' (mean value theorem), so for t in T beyond t_e, y_c is strictly on a known
 //     side of the bound beta = y_e,c.
+//  3. Where the partner touches the side and turns back, gamma'_c vanishes at t_e and has no sign over T'; the
+//     slope integrated piece by piece from t_e (sign_by_integrated_slope) keeps the sign of -(t - t_e)^2, in double
+//     intervals and, within about 1e-12 of t_e, in 256-bit intervals.
 // A coordinate whose enclosure lies inside its range is inside, one whose enclosure misses it is outside; the
 // partner is inside the closed domain over T if every coordinate is, outside if one is.
 #ifndef BEZOUTIAN_LIFTING_INTERNAL_EXACT_POINT_SPANS_H
