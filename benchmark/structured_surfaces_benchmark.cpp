@@ -47,6 +47,16 @@ Patch power_patch(const std::string& x, const std::string& y, const std::string&
   return io::read_json(json, "benchmark").patches.at(0);
 }
 
+// The same surface with u and v exchanged (the transposed control net): a certified answer must not depend on
+// which parameter runs along which direction.
+Patch with_parameters_exchanged(const Patch& p) {
+  Patch::Net net(std::size_t(p.degree_v() + 1), std::vector<Patch::Homogeneous_point>(std::size_t(p.degree_u() + 1)));
+  for (int i = 0; i <= p.degree_u(); ++i)
+    for (int j = 0; j <= p.degree_v(); ++j)
+      net[std::size_t(j)][std::size_t(i)] = p.homogeneous_control_point(std::size_t(i), std::size_t(j));
+  return Patch::from_homogeneous(net);
+}
+
 struct Family {
   std::string name, answer;  // the closed-form answer in words
   Patch phi, psi;
@@ -231,6 +241,16 @@ std::vector<Family> families() {
     f.samples = circle({0, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1, 0, pi / 2);
     out.push_back(f);
   }
+  // the same pairs with both patches' parameters exchanged
+  for (const std::string name : {"two cylinders", "orthogonal extrusions", "torus and a bitangent plane"})
+    for (std::size_t k = 0, n = out.size(); k < n; ++k)
+      if (out[k].name == name) {
+        Family f = out[k];
+        f.name += ", parameters exchanged";
+        f.phi = with_parameters_exchanged(f.phi);
+        f.psi = with_parameters_exchanged(f.psi);
+        out.push_back(f);
+      }
   // self-intersections
   auto self = [&](const std::string& name, const std::string& answer, const Patch& p, std::vector<P3> samples) {
     Family f{name, answer, p, p, std::move(samples)};

@@ -2158,6 +2158,46 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
   CHECK(gap[2] < 5e-3);
 }
 
+TEST_CASE("orthogonal extrusions with both patches' parameters exchanged: the same curve, certified",
+          "[surface][structured][sheets]") {
+  // The pair above with u and v exchanged on both patches: Phi = (x, x^2, z) with x = 2v - 1, z = 2u - 1 and
+  // Psi = (x, 1 - z^2, z) with x = 2s - 1, z = 2t - 1. D = 0 is again the line u = t; at its centre both sheets'
+  // partners (v, s) touch a corner of the partner domain at once, (0, 0) and (1, 1) (x = -1 and x = 1 at z = 0).
+  const Patch phi = from_power({"2*v-1", "(2*v-1)^2", "2*u-1"}, 1, 2);
+  const Patch psi = from_power({"2*u-1", "1-(2*v-1)^2", "2*v-1"}, 1, 2);  // (s, t) read as (u, v)
+  Surface_intersection_options fine;
+  fine.polyline_tolerance = 1e-3;
+  const Surface_locus L = intersection_locus(phi, psi, fine);
+  INFO(L.note);
+  REQUIRE(L.topology_computed);
+  for (const auto& a : L.arcs) {  // every status and fibre, beside the double touch by the integrated slopes
+    CHECK(a.fibre_undecided_fraction == 0);
+    CHECK(a.undecided_fraction == 0);
+  }
+  std::size_t sheets = 0;
+  for (const auto& a : L.arcs)
+    for (const auto& sh : a.sheets) {
+      ++sheets;
+      for (const auto& q : sh.points) {
+        const auto& p = q.point_3d;
+        CHECK(std::fabs(p[1] - p[0] * p[0]) < 1e-9);  // on both closed-form surfaces
+        CHECK(std::fabs(p[1] - 1 + p[2] * p[2]) < 1e-9);
+      }
+    }
+  CHECK(sheets == 2);
+  std::vector<std::array<std::array<double, 3>, 3>> samples;
+  for (int k = 0; k <= 2000; ++k)
+    for (int sign : {-1, 1}) {
+      const double x = -1 + 2.0 * k / 2000, z = sign * std::sqrt(std::max(0.0, 1 - x * x));
+      samples.push_back({std::array<double, 3>{(z + 1) / 2, (x + 1) / 2, 0}, std::array<double, 3>{x, x * x, z},
+                         std::array<double, 3>{(x + 1) / 2, (z + 1) / 2, 0}});
+    }
+  const auto gap = worst_sheet_gap(L, samples);
+  CHECK(gap[0] < 5e-3);
+  CHECK(gap[1] < 5e-3);
+  CHECK(gap[2] < 5e-3);
+}
+
 TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal minors give the curve; one sphere "
           "under two parametrizations is refused with the reason",
           "[surface][structured][minors]") {

@@ -194,13 +194,19 @@ inline Partner_status status_beside_exact_point(const Partner_equations& eq, con
   // 1. the zero curve over T' from a box around K and e
   const D Tp{std::min(T.lo, Te.lo), std::max(T.hi, Te.hi)};
   const std::array<Rational, 3> exact{e.x[std::size_t(other)], e.y[0], e.y[1]};
+  // (the mean-value form in t makes the image symmetric about the value at Tp's centre, where the partner's
+  // range is one-sided at a touch: a box twice as wide is tried next)
   std::array<D, 3> W, Kp;
-  for (int c = 0; c < 3; ++c) {
-    const D x = D::of(exact[std::size_t(c)]);
-    const double lo = std::min(K[c].lo, x.lo), hi = std::max(K[c].hi, x.hi), r = 0.1 * (hi - lo) + 1e-15;
-    W[c] = D{lo - r, hi + r};
+  bool proved = false;
+  for (const double f : {0.1, 1.0}) {
+    for (int c = 0; c < 3; ++c) {
+      const D x = D::of(exact[std::size_t(c)]);
+      const double lo = std::min(K[c].lo, x.lo), hi = std::max(K[c].hi, x.hi), r = f * (hi - lo) + 1e-15;
+      W[c] = D{lo - r, hi + r};
+    }
+    if ((proved = prove_zero_curve(eq, axis, Tp, W, Kp))) break;
   }
-  if (!prove_zero_curve(eq, axis, Tp, W, Kp)) return no;
+  if (!proved) return no;
   for (int c = 0; c < 3; ++c)
     if (!(W[c].lo <= K[c].lo && K[c].hi <= W[c].hi && Rational(Kp[c].lo) <= exact[std::size_t(c)] &&
           exact[std::size_t(c)] <= Rational(Kp[c].hi)))
