@@ -128,7 +128,8 @@ TEST_CASE("limits: the time budget ends the computation with Budget_exceeded nam
     CHECK(std::string(e.what()).find("intersect_curves: time_limit exceeded in power forms: ") == 0);
   }
   CHECK(seconds_since(t0) < 1.0);
-  // the subresultant method passes several checks: with a budget it ends at one of them, or answers in time
+  // the subresultant method passes several checks: with a budget it ends at one of them (which one depends on the
+  // machine's speed and load: any stage the path checks), or answers in time
   o.method = Curve_intersection_method::subresultant;
   o.limits.time_limit = 0.002;
   par.degree_1 = 6, par.degree_2 = 6, par.intersections = 4, par.rational = true, par.seed = 77;
@@ -139,7 +140,8 @@ TEST_CASE("limits: the time budget ends the computation with Budget_exceeded nam
     CHECK(r.points.size() >= 4);
   } catch (const Budget_exceeded& e) {
     const std::string st = e.stage();
-    CHECK((st == "power forms" || st == "elimination" || st == "root isolation" || st == "pairing" || st == "shear"));
+    CHECK((st == "power forms" || st == "interval solver" || st == "exact default path" || st == "elimination" ||
+           st == "root isolation" || st == "pairing" || st == "shear" || st == "overlaps"));
   }
   CHECK(seconds_since(t1) < 2.0);
   // without a budget the same problem is answered: every constructed intersection is found
