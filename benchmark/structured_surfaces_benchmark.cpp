@@ -1,7 +1,8 @@
 // Structured surfaces with closed-form intersections: height fields, cylinders, orthogonal extrusions, a torus
 // and its bitangent plane, Viviani's sphere and cylinder, spheres cut and touched by planes,
 // spheres touching, a cone and a plane tangent along curves, pieces of one surface (halves, overlaps, adjacent
-// octants), and self-intersections (a height field, a sphere cap and octant, extruded loops, a folded patch). For
+// octants), the cylinders, extrusions and torus again with both patches' parameters exchanged, and
+// self-intersections (a height field, a sphere cap and octant, extruded loops, a folded patch). For
 // each pair: our certified intersection (answered, certified, complete against dense samples of the
 // closed-form answer, time) and, side by side in the same run when built with OpenCASCADE, GeomAPI_IntSS on the
 // same rational Bezier patches (curves found, completeness by the same measure, points off the true answer, time)
