@@ -2105,33 +2105,11 @@ void check_exact_touch_at_centre(const Surface_locus& L, double v, double s) {
       }
   CHECK(found);
 }
-}  // namespace
 
-TEST_CASE("orthogonal extrusions: two branches over one projected line, both lifted", "[surface][structured][sheets]") {
-  // Phi = (x, x^2, z) with x = 2u - 1, z = 2v - 1 (y = x^2 extruded along z); Psi = (x, 1 - z^2, z) with
-  // x = 2t - 1, z = 2s - 1 (y = 1 - z^2 extruded along x). The curve: x in [-1, 1], y = x^2, z = +-sqrt(1 - x^2):
-  // two branches over the one projected line u = t (det B = (u - t)^2), meeting at x = +-1 (the corners of the
-  // (u, t) box).
-  const Patch phi = from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
-  const Patch psi = from_power({"2*v-1", "1-(2*u-1)^2", "2*u-1"}, 2, 1);  // (s, t) read as (u, v)
-  Surface_intersection_options fine;
-  fine.polyline_tolerance = 1e-3;
-  const Surface_locus L = intersection_locus(phi, psi, fine);
-  INFO(L.note);
-  REQUIRE(L.topology_computed);
-  // D = u - t: every point of the line, and nothing else
-  CHECK(L.equation.square_free.degree() == 1);
-  // every partner proved found, up to x = +-1, where the sheets meet in folds of the partner at the box's corners
-  // (the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined
-  // pairing); the partner touches the corner (1, 1) of the (v, s) domain at x = 0 (u = t = 1/2, z = +-1): an exact
-  // point, proved genuine (lifting/partner_boundary_points.h), and the statuses beside it proved by the integrated
-  // slope of the partner (lifting/internal/exact_point_spans.h; within about 1e-12 of it in 256-bit intervals, where
-  // the double enclosures are wider than the partner's distance to the side, about (t - 1/2)^2)
-  for (const auto& a : L.arcs) {
-    CHECK(a.fibre_undecided_fraction == 0);
-    CHECK(a.undecided_fraction == 0);
-  }
-  check_exact_touch_at_centre(L, 1, 1);
+// The orthogonal extrusions' curve (x, x^2, +-sqrt(1 - x^2)): two sheets, every sheet point on both closed-form
+// surfaces (and phi, psi agreeing there), and completeness against 2 x 2001 samples in 3D and in both parameter
+// domains, (u, v) = ((x + 1)/2, (z + 1)/2) and (s, t) = ((z + 1)/2, (x + 1)/2), each pair reversed if `exchanged`.
+void check_extrusion_sheets(const Surface_locus& L, const Patch& phi, const Patch& psi, bool exchanged) {
   std::size_t sheets = 0;
   for (const auto& a : L.arcs)
     for (const auto& s : a.sheets) {
@@ -2144,58 +2122,54 @@ TEST_CASE("orthogonal extrusions: two branches over one projected line, both lif
       }
     }
   CHECK(sheets == 2);
-  // completeness against 2 x 2001 samples of the closed form, in 3D and in both parameter domains
   std::vector<std::array<std::array<double, 3>, 3>> samples;
   for (int k = 0; k <= 2000; ++k)
     for (int sign : {-1, 1}) {
       const double x = -1 + 2.0 * k / 2000, z = sign * std::sqrt(std::max(0.0, 1 - x * x));
-      samples.push_back({std::array<double, 3>{(x + 1) / 2, (z + 1) / 2, 0}, std::array<double, 3>{x, x * x, z},
-                         std::array<double, 3>{(z + 1) / 2, (x + 1) / 2, 0}});
+      const double a = (x + 1) / 2, b = (z + 1) / 2;
+      samples.push_back({std::array<double, 3>{exchanged ? b : a, exchanged ? a : b, 0}, std::array<double, 3>{x, x * x, z},
+                         std::array<double, 3>{exchanged ? a : b, exchanged ? b : a, 0}});
     }
   const auto gap = worst_sheet_gap(L, samples);
   CHECK(gap[0] < 5e-3);
   CHECK(gap[1] < 5e-3);
   CHECK(gap[2] < 5e-3);
 }
+}  // namespace
 
-TEST_CASE("orthogonal extrusions with both patches' parameters exchanged: the same curve, certified",
-          "[surface][structured][sheets]") {
-  // The pair above with u and v exchanged on both patches: Phi = (x, x^2, z) with x = 2v - 1, z = 2u - 1 and
-  // Psi = (x, 1 - z^2, z) with x = 2s - 1, z = 2t - 1. D = 0 is again the line u = t; at its centre both sheets'
-  // partners (v, s) touch a corner of the partner domain at once, (0, 0) and (1, 1) (x = -1 and x = 1 at z = 0).
-  const Patch phi = from_power({"2*v-1", "(2*v-1)^2", "2*u-1"}, 1, 2);
-  const Patch psi = from_power({"2*u-1", "1-(2*v-1)^2", "2*v-1"}, 1, 2);  // (s, t) read as (u, v)
-  Surface_intersection_options fine;
-  fine.polyline_tolerance = 1e-3;
-  const Surface_locus L = intersection_locus(phi, psi, fine);
-  INFO(L.note);
-  REQUIRE(L.topology_computed);
-  for (const auto& a : L.arcs) {  // every status and fibre, beside the double touch by the integrated slopes
-    CHECK(a.fibre_undecided_fraction == 0);
-    CHECK(a.undecided_fraction == 0);
+TEST_CASE("orthogonal extrusions: two branches over one projected line, both lifted", "[surface][structured][sheets]") {
+  // Phi = (x, x^2, z) with x = 2u - 1, z = 2v - 1 (y = x^2 extruded along z); Psi = (x, 1 - z^2, z) with
+  // x = 2t - 1, z = 2s - 1 (y = 1 - z^2 extruded along x). The curve: x in [-1, 1], y = x^2, z = +-sqrt(1 - x^2):
+  // two branches over the one projected line u = t (det B = (u - t)^2), meeting at x = +-1 (the corners of the
+  // (u, t) box). Then the same pair with u and v exchanged on both patches (x = 2v - 1, z = 2u - 1 and x = 2s - 1,
+  // z = 2t - 1): D = 0 is again the line u = t, and at its centre both sheets' partners (v, s) touch a corner of
+  // the partner domain at once, (0, 0) and (1, 1).
+  for (const bool exchanged : {false, true}) {
+    INFO("parameters exchanged " << exchanged);
+    const Patch phi = exchanged ? from_power({"2*v-1", "(2*v-1)^2", "2*u-1"}, 1, 2)
+                                : from_power({"2*u-1", "(2*u-1)^2", "2*v-1"}, 2, 1);
+    const Patch psi = exchanged ? from_power({"2*u-1", "1-(2*v-1)^2", "2*v-1"}, 1, 2)  // (s, t) read as (u, v)
+                                : from_power({"2*v-1", "1-(2*u-1)^2", "2*u-1"}, 2, 1);
+    Surface_intersection_options fine;
+    fine.polyline_tolerance = 1e-3;
+    const Surface_locus L = intersection_locus(phi, psi, fine);
+    INFO(L.note);
+    REQUIRE(L.topology_computed);
+    // D = u - t: every point of the line, and nothing else
+    CHECK(L.equation.square_free.degree() == 1);
+    // every partner proved found, up to x = +-1, where the sheets meet in folds of the partner at the box's corners
+    // (the coordinate equation E_x = 2(u - t) vanishes on the whole line, so the partners come from the combined
+    // pairing); a partner touches the corner (1, 1) of the (v, s) domain at u = t = 1/2: an exact point, proved
+    // genuine (lifting/partner_boundary_points.h), and the statuses beside it proved by the integrated slope of the
+    // partner (lifting/internal/exact_point_spans.h; within about 1e-12 of it in 256-bit intervals, where the double
+    // enclosures are wider than the partner's distance to the side, about (t - 1/2)^2)
+    for (const auto& a : L.arcs) {
+      CHECK(a.fibre_undecided_fraction == 0);
+      CHECK(a.undecided_fraction == 0);
+    }
+    check_exact_touch_at_centre(L, 1, 1);
+    check_extrusion_sheets(L, phi, psi, exchanged);
   }
-  std::size_t sheets = 0;
-  for (const auto& a : L.arcs)
-    for (const auto& sh : a.sheets) {
-      ++sheets;
-      for (const auto& q : sh.points) {
-        const auto& p = q.point_3d;
-        CHECK(std::fabs(p[1] - p[0] * p[0]) < 1e-9);  // on both closed-form surfaces
-        CHECK(std::fabs(p[1] - 1 + p[2] * p[2]) < 1e-9);
-      }
-    }
-  CHECK(sheets == 2);
-  std::vector<std::array<std::array<double, 3>, 3>> samples;
-  for (int k = 0; k <= 2000; ++k)
-    for (int sign : {-1, 1}) {
-      const double x = -1 + 2.0 * k / 2000, z = sign * std::sqrt(std::max(0.0, 1 - x * x));
-      samples.push_back({std::array<double, 3>{(z + 1) / 2, (x + 1) / 2, 0}, std::array<double, 3>{x, x * x, z},
-                         std::array<double, 3>{(x + 1) / 2, (z + 1) / 2, 0}});
-    }
-  const auto gap = worst_sheet_gap(L, samples);
-  CHECK(gap[0] < 5e-3);
-  CHECK(gap[1] < 5e-3);
-  CHECK(gap[2] < 5e-3);
 }
 
 TEST_CASE("orthogonal extrusions where det B vanishes identically: the maximal minors give the curve; one sphere "
