@@ -2357,3 +2357,59 @@ TEST_CASE("torus and a bitangent plane: the arc of a Villarceau circle, certifie
   CHECK(gap[1] < 5e-3);  // 3D
   CHECK(gap[2] < 5e-3);  // plane (u, v)
 }
+
+TEST_CASE("limits: surface intersection refuses oversized patches and stops at its time budget, naming the stage",
+          "[surface][limits]") {
+  // size limits, before anything: degree 65 in u (max_degree 64), a coordinate of 5001 bits (max_coefficient_bits)
+  const Patch steep = from_power({"u^65", "v", "u"}, 65, 1);
+  const Patch plane = from_power({"u", "v", "1/2"}, 1, 1);
+  try {
+    intersection_locus(steep, plane);
+    FAIL("no Limit_exceeded");
+  } catch (const Limit_exceeded& e) {
+    CHECK(e.limit() == "max_degree");
+    CHECK(e.stage() == "input");
+    CHECK(std::string(e.what()).find("patch 1 has degree 65") != std::string::npos);
+  }
+  Rational big(1);
+  for (int i = 0; i < 5000; ++i) big = big * Rational(2);
+  const Patch huge(std::vector<std::vector<Patch::Point>>{{Patch::Point{Q(0), Q(0), Q(0)}, Patch::Point{Q(0), Q(1), Q(0)}},
+                                                         {Patch::Point{Q(1), Q(0), Q(0)}, Patch::Point{Q(1), Q(1), big}}});
+  try {
+    self_intersection_locus(huge);
+    FAIL("no Limit_exceeded");
+  } catch (const Limit_exceeded& e) {
+    CHECK(e.limit() == "max_coefficient_bits");
+  }
+  Surface_intersection_options unlimited;
+  unlimited.limits = Intersection_limits::none();
+  CHECK_NOTHROW(intersection_locus(plane, from_power({"u", "1/2", "v"}, 1, 1), unlimited));
+  // the time budget: exhausted at the first check, after the direct proofs (which do not decide these pairs: the
+  // saddle z = uv meets the plane y = 1/2; the extruded nodal cubic crosses itself along a line)
+  Surface_intersection_options o;
+  o.limits.time_limit = 1e-9;
+  const Patch saddle = from_power({"u", "v", "u*v"}, 1, 1), wall = from_power({"u", "1/2", "v"}, 1, 1);
+  try {
+    intersection_locus(saddle, wall, o);
+    FAIL("no Budget_exceeded");
+  } catch (const Budget_exceeded& e) {
+    CHECK(e.limit() == "time_limit");
+    CHECK(e.stage() == "direct proofs");
+    CHECK(std::string(e.what()).find("intersection_locus: time_limit exceeded in direct proofs: ") == 0);
+  }
+  const std::string c = "(3*u - 3/2)";
+  const Patch loop = from_power({c + "^2 - 1", c + "*(" + c + "^2 - 1)", "v"}, 3, 1);
+  try {
+    self_intersection_locus(loop, o);
+    FAIL("no Budget_exceeded");
+  } catch (const Budget_exceeded& e) {
+    CHECK(e.stage() == "direct proofs");
+  }
+  // a budget that is not reached changes nothing: the curve (u, 1/2, u/2) (D = 0 is the line t = u/2 on (u, t))
+  o.limits.time_limit = 600;
+  const Surface_locus L = intersection_locus(saddle, wall, o);
+  REQUIRE(L.topology_computed);
+  for (const auto& a : L.arcs)
+    for (const auto& q : a.points)
+      if (q.genuine) CHECK(std::fabs(q.point_3d[2] - q.point_3d[0] / 2) < 1e-9);
+}

@@ -107,9 +107,28 @@ struct Surface_intersection_options {
   /// Self-intersection: search the pinch points of the patch in the box (lifting/pinch_points.h), with at most
   /// this many subdivision boxes (0: no search). Above it the search says it is incomplete.
   std::size_t pinch_point_boxes = 600000;
+  /// Size limits of each patch, checked before anything (Limit_exceeded naming the limit): max_control_points,
+  /// max_degree (in u and in v), max_coefficient_bits; max_degree_product is not used here. And the wall-clock
+  /// budget `time_limit` (default 0: none), checked between the stages (direct proofs, elimination, pinch points,
+  /// topology, lifting, split points, certified lifting, complete lifting): Budget_exceeded names the stage that
+  /// has just run; one stage may overrun it (the whole-plane topology policy, when opted in, is not bounded).
+  Intersection_limits limits;
 };
 
 namespace internal {
+
+/// The size limits of Surface_intersection_options::limits for one patch (`what` names it in the message).
+inline void check_patch_limits(const char* function, const std::string& what, const Rational_bezier_patch<Rational>& p,
+                               const Intersection_limits& l) {
+  check_size_limits(function, what, {p.degree_u(), p.degree_v()}, long(p.degree_u() + 1) * long(p.degree_v() + 1), l);
+  if (l.max_coefficient_bits <= 0) return;
+  long bits = 0;
+  for (int i = 0; i <= p.degree_u(); ++i)
+    for (int j = 0; j <= p.degree_v(); ++j)
+      for (const Rational& x : p.homogeneous_control_point(std::size_t(i), std::size_t(j)))
+        bits = std::max(bits, rational_bits(x));
+  check_coefficient_bits(function, what, bits, l);
+}
 
 // Floating-point evaluation of a rational bivariate polynomial (inner variable x, outer y).
 inline double evaluate_double(const Polynomial_2<Rational>& p, double x, double y) {
@@ -1236,19 +1255,25 @@ inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rationa
 
 inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rational>& patch,
                                              const Surface_intersection_options& o = {}) {
+  internal::check_patch_limits("self_intersection_locus", "the patch", patch, o.limits);
+  const internal::Time_budget budget("self_intersection_locus", o.limits.time_limit);
   if (o.direct_proofs && internal::within_unit_square(o)) {
     const Injectivity_proof proof = prove_injective(patch);
     if (proof.proved) return internal::injective_patch_locus(patch, o, proof);
   }
+  budget.check("direct proofs");
   Surface_locus L;
   L.self_intersection = true;
   L.equation = self_intersection_equation(patch, o.formula);
+  budget.check("elimination");
   if (L.equation.is_degenerate())
     throw Invalid_input("self-intersection: det B vanishes identically (the patch is not generic in the sense of "
                         "Theorems 4-5: e.g. it covers a surface twice, or its double-point system degenerates at "
                         "infinity, as for an exact graph (u, v, f(u,v)))");
   internal::search_pinch_points(L, patch, o);
+  budget.check("pinch points");
   const bool traced = internal::topology_is_affordable(L, internal::with_partner_proofs(o, internal::Partner_equations(patch)));
+  budget.check("topology");
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
   auto lift_point = [&](double u, double v, const std::array<double, 2>* guess) {
@@ -1306,11 +1331,15 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
                              " is a collapsed edge, along which the Jacobian has rank <= 1 everywhere";
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
+  budget.check("lifting");
   internal::insert_split_points(L, internal::Partner_equations(patch), o, lift_point);
+  budget.check("split points");
   // the half-branches' proved spans, from the status proof to the fibre proof
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
+  budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
+  budget.check("complete lifting");
   internal::prove_linear_partner_lines(L, internal::Partner_equations(patch), o,
                                        2 * (patch.degree_u() + patch.degree_v()));
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
@@ -1402,6 +1431,9 @@ inline std::vector<Boundary_contact> boundary_contacts(const Rational_bezier_pat
 inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& phi,
                                         const Rational_bezier_patch<Rational>& psi,
                                         const Surface_intersection_options& o = {}) {
+  internal::check_patch_limits("intersection_locus", "patch 1", phi, o.limits);
+  internal::check_patch_limits("intersection_locus", "patch 2", psi, o.limits);
+  const internal::Time_budget budget("intersection_locus", o.limits.time_limit);
   Surface_locus L;
   L.self_intersection = false;
   L.contacts = boundary_contacts(phi, psi);
@@ -1422,6 +1454,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
       if (proof.proved) return internal::separated_patches_locus(o, proof);
     }
   }
+  budget.check("direct proofs");
   L.equation = intersection_equation(phi, psi, o.formula);
   if (L.equation.is_degenerate()) {
     // every (u, t) has a solution: typically Psi = Phi o M, two pieces of one parametrized surface
@@ -1442,9 +1475,11 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
     L.equation.route = Implicit_equation::Route::maximal_minors;
     L.equation.generic_rank = mm.rank.rank;
   }
+  budget.check("elimination");
   const bool traced = internal::topology_is_affordable(
       L, internal::with_partner_proofs(o, internal::Partner_equations(phi, psi)),
       [&](bool vertical, const Rational& c) { return internal::interior_line_is_genuine(vertical, c, o, phi, &psi); });
+  budget.check("topology");
   const Bezoutian_matrix& B = L.equation.matrix;
   const internal::Double_bezoutian_matrix B_double(B);
   auto lift_point = [&](double u, double t, const std::array<double, 2>* guess) {
@@ -1496,11 +1531,15 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::describe_edge_lines(L, o, phi, &psi, lift_point);
   if (!traced) return L;
   internal::lift_arcs(L, lift_point);
+  budget.check("lifting");
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
+  budget.check("split points");
   // the half-branches' proved spans, from the status proof to the fibre proof
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
   internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
+  budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
+  budget.check("complete lifting");
   internal::prove_linear_partner_lines(L, internal::Partner_equations(phi, psi), o,
                                        phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
