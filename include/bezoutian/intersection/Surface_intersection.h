@@ -110,8 +110,9 @@ struct Surface_intersection_options {
   /// Size limits of each patch, checked before anything (Limit_exceeded naming the limit): max_control_points,
   /// max_degree (in u and in v), max_coefficient_bits; max_degree_product is not used here. And the wall-clock
   /// budget `time_limit` (default 0: none), checked between the stages (direct proofs, elimination, pinch points,
-  /// topology, lifting, split points, certified lifting, complete lifting): Budget_exceeded names the stage that
-  /// has just run; one stage may overrun it (the whole-plane topology policy, when opted in, is not bounded).
+  /// topology, lifting, split points, certified lifting, complete lifting) and before each arc of the two proved
+  /// lifting stages: Budget_exceeded names the stage; the others may overrun it (the whole-plane topology policy,
+  /// when opted in, is not bounded).
   Intersection_limits limits;
 };
 
@@ -844,7 +845,7 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
 template <class Lift>
 void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
                      Lift lift_point, const Rational_bezier_patch<Rational>* self_patch = nullptr,
-                     Half_branch_chains* chains = nullptr) {
+                     Half_branch_chains* chains = nullptr, const Time_budget* time = nullptr) {
   if (L.topology_method != "subdivision" || !o.certify_lifting) return;
   // self-intersection: the partner equations divided by the trivial partner, for spans near pinch points
   std::vector<Blown_up_partner_equations> blown_up;
@@ -858,6 +859,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    if (time) time->check("certified lifting");  // (per arc: the stage's cost grows with the number of arcs)
     Locus_arc& arc = L.arcs[k];
     // the split points: their status is their own proof (about the exact crossing); the spans next to them are
     // decided from the side of the boundary line that the partner is on (classify_span_at_split)
@@ -936,13 +938,14 @@ inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations
 // while a sheet has one inside is replaced by the sheet's point (it is genuine).
 template <class Lift>
 void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o, Lift lift_point,
-                 const Half_branch_chains* chains = nullptr) {
+                 const Half_branch_chains* chains = nullptr, const Time_budget* time = nullptr) {
   if (L.topology_method != "subdivision" || !o.complete_lifting) return;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   std::unique_ptr<Double_curve_equation> D_double;
   std::size_t inserted = 0, full_fibres = 0;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    if (time) time->check("complete lifting");
     Locus_arc& arc = L.arcs[k];
     const Curve_topology_edge& e = L.topology.edges[k];
     if (arc.points.size() != e.polyline.size()) continue;
@@ -1336,9 +1339,9 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   budget.check("split points");
   // the half-branches' proved spans, from the status proof to the fibre proof
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
-  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains);
+  internal::certify_lifting(L, internal::Partner_equations(patch), o, lift_point, &patch, &chains, &budget);
   budget.check("certified lifting");
-  internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains);
+  internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
   internal::prove_linear_partner_lines(L, internal::Partner_equations(patch), o,
                                        2 * (patch.degree_u() + patch.degree_v()));
@@ -1536,9 +1539,9 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   budget.check("split points");
   // the half-branches' proved spans, from the status proof to the fibre proof
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);
-  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains);
+  internal::certify_lifting(L, internal::Partner_equations(phi, psi), o, lift_point, nullptr, &chains, &budget);
   budget.check("certified lifting");
-  internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains);
+  internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
   internal::prove_linear_partner_lines(L, internal::Partner_equations(phi, psi), o,
                                        phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
