@@ -1072,13 +1072,27 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
           flush();
           continue;
         }
+        const Locus_point& p = arc.points[i];
         if (S.genuine_proved[j]) {
           q.status_proved = true;
           q.partner_enclosure = {{{S.enclosure[j][0].lo, S.enclosure[j][0].hi}, {S.enclosure[j][1].lo, S.enclosure[j][1].hi}}};
+        } else if (p.status_proved && p.genuine) {
+          // a traced point proved genuine by itself (an exact point with its partner on the domain's boundary,
+          // insert_boundary_points; its span proofs end in its few-ulp box): this sheet's point if the sheet's
+          // partner lies in the point's partner box (up to the floating point of the sheet)
+          bool same = true;
+          for (int c = 0; c < 2; ++c) {
+            const auto& b = p.partner_enclosure[std::size_t(c)];
+            const double y = S.partner[j][std::size_t(c)], slack = 1e-12 * (1 + std::fabs(y));
+            same = same && b[0] - slack <= y && y <= b[1] + slack;
+          }
+          if (same) {
+            q.status_proved = true;
+            q.partner_enclosure = p.partner_enclosure;
+          }
         }
         if (run.points.empty()) run.first = i;
         run.points.push_back(q);
-        const Locus_point& p = arc.points[i];
         if ((!p.genuine && !p.status_proved) || (!p.status_proved && q.status_proved)) arc.points[i] = q;
       }
       flush();

@@ -554,8 +554,8 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           bool genuine, outside;
           decided(genuine, outside);
           // next to an exact point with its partner on the domain's boundary, by monotonicity (exact_point_spans.h)
+          // (every sheet is tried, also once another decides the span: each sheet is a branch of the space curve)
           for (const Partner_boundary_point* x : span_exact_points) {
-            if (genuine || outside) break;
             for (std::size_t j = 0; j < K.size(); ++j)
               if (status[j] == Partner_status::undecided) {
                 const Partner_status st = status_beside_exact_point(eq, domain, axis, Ts, K[j], *x);
@@ -583,9 +583,24 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           for (int end = 0; end < 2; ++end) {  // the enclosures at the polyline points the part reaches
             if ((end == 0 ? sp.f0 : sp.f1) != end || ends_done[end]) continue;
             ends_done[end] = true;
+            const std::size_t point = end == 0 ? i : i + 1;
             for (std::size_t j = 0; j < active.size(); ++j) {
               Partner_sheet& S = out.sheets[active[j]];
-              const std::size_t k = (end == 0 ? i : i + 1) - S.first;
+              const std::size_t k = point - S.first;
+              // the point may be an exact point e with its partner on the boundary (the span's end inside e's box):
+              // K_j holds e, so the sheet's zero there, unique in K_j's box, is e, in the closed domain
+              bool at_exact = false;
+              for (const Partner_boundary_point* x : span_exact_points) {
+                const std::array<Rational, 3> w{x->x[std::size_t(other)], x->y[0], x->y[1]};
+                bool in = Rational(e.polyline[point][0]) == x->x[0] && Rational(e.polyline[point][1]) == x->x[1];
+                for (int c = 0; c < 3 && in; ++c) in = Rational(K[j][c].lo) <= w[std::size_t(c)] && w[std::size_t(c)] <= Rational(K[j][c].hi);
+                if (in) {
+                  at_exact = true;
+                  S.enclosure[k] = {D::of(x->y[0]), D::of(x->y[1])};
+                  S.genuine_proved[k] = 1;
+                }
+              }
+              if (at_exact || (S.genuine_proved[k] && status[j] != Partner_status::genuine)) continue;  // (proved already)
               S.enclosure[k] = {K[j][1], K[j][2]};
               S.genuine_proved[k] = status[j] == Partner_status::genuine;
             }

@@ -181,6 +181,9 @@ inline Partner_status status_beside_exact_point(const Partner_equations& eq, con
                                                 const Partner_boundary_point& e) {
   using D = Double_interval;
   const Partner_status no = Partner_status::undecided;
+  // (two patches only: the coordinate ranges below are those of y = (v, s); a self-intersection's partner domain
+  // moves with the point, and partner_boundary_points.h makes no exact points for it)
+  if (eq.self_intersection()) return no;
   const int other = 1 - axis;
   const Rational& t_e = e.x[std::size_t(axis)];
   const D Te = D::of(t_e);
@@ -241,9 +244,7 @@ inline Partner_status status_beside_exact_point(const Partner_equations& eq, con
   // the arc points' coordinates (P = (x1, y1), Q = (y2, x2)) in the domain
   const D& X1 = axis == 0 ? T : K[0];
   const D& X2 = axis == 0 ? K[0] : T;
-  if (!(interval_inside(X1, domain.u0, domain.u1) && interval_inside(X2, domain.v0, domain.v1)))
-    return no;
-  if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return no;
+  if (!(interval_inside(X1, domain.u0, domain.u1) && interval_inside(X2, domain.v0, domain.v1))) return no;
   return Partner_status::genuine;
 }
 
