@@ -858,6 +858,8 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   const bool kernel_usable = L.equation.route == Implicit_equation::Route::determinant;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
+  std::vector<double> length(L.arcs.size(), 0);                 // (the measure of undecided_fraction)
+  std::vector<std::vector<bool>> split_of(L.arcs.size()), float_genuine_of(L.arcs.size());
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     if (time) time->check("certified lifting");  // (per arc: the stage's cost grows with the number of arcs)
     Locus_arc& arc = L.arcs[k];
@@ -886,6 +888,9 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
                               float_genuine, budget, 6, split_boxes, blown_up.empty() ? nullptr : &blown_up,
                               kernel_usable ? &kernel : nullptr, chains);
     arc.undecided_fraction = c.undecided_fraction;
+    length[k] = c.length;
+    split_of[k] = split;
+    float_genuine_of[k] = float_genuine;
     for (std::size_t i = 0; i < arc.points.size() && i < c.point_status.size(); ++i)
       if (c.point_status[i] != Partner_status::undecided && !split[i]) {
         Locus_point& q = arc.points[i];
@@ -899,6 +904,32 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
         q.status_proved = true;
         q.genuine = c.point_status[i] == Partner_status::genuine;
         if (q.genuine) q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
+      }
+  }
+  // half-branches left open where another half-branch of their singular box runs through their strip: proved
+  // phantom beside that one's proved spans (lifting/internal/beside_half_branches.h), once every chain is known
+  if (!chains || o.partner_domain_unbounded) return;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    Locus_arc& arc = L.arcs[k];
+    if (!(arc.undecided_fraction > 0) || !(length[k] > 0)) continue;
+    if (time) time->check("certified lifting");
+    const Curve_topology_edge& e = L.topology.edges[k];
+    std::vector<Partner_status> status(arc.points.size(), Partner_status::undecided);
+    for (std::size_t i = 0; i < arc.points.size(); ++i)
+      if (arc.points[i].status_proved)
+        status[i] = arc.points[i].genuine ? Partner_status::genuine : Partner_status::phantom;
+    double decided = 0;
+    for (const Curve_topology_piece& pc : e.pieces)
+      if (pc.graph_axis < 0 && pc.last < e.polyline.size() && pc.first < pc.last)
+        decided += (std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
+                    std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1])) *
+                   prove_beside_half_branches(eq, o.partner_domain, e, pc, float_genuine_of[k], *chains, budget, status);
+    if (!(decided > 0)) continue;
+    arc.undecided_fraction = std::max(0.0, arc.undecided_fraction - decided / length[k]);
+    for (std::size_t i = 0; i < arc.points.size(); ++i)
+      if (status[i] == Partner_status::phantom && !arc.points[i].status_proved && !split_of[k][i]) {
+        arc.points[i].status_proved = true;
+        arc.points[i].genuine = false;
       }
   }
 }

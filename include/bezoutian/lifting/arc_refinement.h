@@ -180,8 +180,12 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
     return false;
   };
   for (std::size_t p = 0; p < e.pieces.size(); ++p) {
-    if (e.pieces[p].graph_axis < 0) continue;
-    const int axis = e.pieces[p].graph_axis;
+    // a half-branch inside a singular box is refined along the coordinate its chained proof runs on (the
+    // crossing's normal), by continuation of its partners only: the roots of D on a line there belong to several
+    // branches
+    const bool half_branch = e.pieces[p].graph_axis < 0;
+    if (half_branch && e.pieces[p].singular_end < 0) continue;
+    const int axis = half_branch ? (e.pieces[p].crossing_on_vertical_line ? 0 : 1) : e.pieces[p].graph_axis;
     const Parameter_box cell = e.pieces[p].cell;
     const double width = std::fabs(CGAL::to_double(axis == 0 ? cell.u1 - cell.u0 : cell.v1 - cell.v0));
     std::size_t i = e.pieces[p].first;
@@ -191,7 +195,7 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
       // a sheet that begins or ends inside the domain (a fold: two partners meet and turn complex) is located to
       // 2^-40 of the cell; a sheet that only leaves the domain is not (the split-point proofs locate that crossing
       // exactly), nor a change among partners outside the domain (next to a seam)
-      const bool fold = fibres[i].size() != fibres[i + 1].size() &&
+      const bool fold = !half_branch && fibres[i].size() != fibres[i + 1].size() &&
                         inside_count(xa, fibres[i]) != inside_count(xb, fibres[i + 1]);
       const double located = std::ldexp(width, -40);
       // chords are refined between genuine points only (where a sheet leaves the domain the split-point proofs
@@ -278,6 +282,15 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
       }
       const double lo = CGAL::to_double(axis == 0 ? cell.v0 : cell.u0), hi = CGAL::to_double(axis == 0 ? cell.v1 : cell.u1);
       if (continued && !(lo <= x[std::size_t(1 - axis)] && x[std::size_t(1 - axis)] <= hi)) continued = false;
+      if (continued && half_branch) {  // (on this branch: near the chord of the span)
+        const double oa = xa[std::size_t(1 - axis)], ob = xb[std::size_t(1 - axis)], room = std::fabs(tb - ta);
+        const double o = x[std::size_t(1 - axis)];
+        continued = std::min(oa, ob) - room <= o && o <= std::max(oa, ob) + room;
+      }
+      if (!continued && half_branch) {
+        ++i;
+        continue;
+      }
       if (!continued) {
         if (!arc_point(cell, axis, tm, xa, fibres[i], xb, fibres[i + 1], x)) {
           ++i;

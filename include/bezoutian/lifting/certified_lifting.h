@@ -21,6 +21,7 @@
 #define BEZOUTIAN_LIFTING_CERTIFIED_LIFTING_H
 
 #include <bezoutian/topology/Curve_topology.h>
+#include <bezoutian/lifting/internal/beside_half_branches.h>
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
 #include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/double_partner_witness.h>
@@ -46,6 +47,7 @@ struct Edge_partner_certificate {
   /// per polyline point proved genuine: an enclosure of a partner of the arc point (NaN bounds otherwise)
   std::vector<std::array<Double_interval, 2>> partner_enclosure;
   double undecided_fraction = 1;            ///< undecided share of the edge's spans (by graph-coordinate length)
+  double length = 0;                        ///< the edge's length in that measure
 };
 
 /// Phantom proof without a followed partner, for a run of spans T_1, ..., T_r (sorted, disjoint interiors) of
@@ -551,6 +553,7 @@ inline Edge_partner_certificate certify_edge_partners(const Partner_equations& e
     piece.prove_points();
   }
   out.undecided_fraction = total > 0 ? undecided / total : 1;
+  out.length = total;
   return out;
 }
 
@@ -597,7 +600,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
   auto record_fibre = [&](const D& T, const std::array<D, 3>& W, const std::array<D, 3>& K, Partner_status st) {
     if (!record) return;
     if (st == Partner_status::phantom) {  // (status_from_partner excluded every partner of T x K_other)
-      record->spans.push_back({T, {W[1], W[2]}, 0});
+      record->spans.push_back({T, {W[1], W[2]}, 0, K[0]});
       return;
     }
     const D X1 = axis == 0 ? T : K[0], X2 = axis == 0 ? K[0] : T;
@@ -605,7 +608,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     const std::array<D, 3> hole = widened_unique_box(eq, axis, T, W);
     const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, box, domain), {{hole[1], hole[2]}});
     if (chains->take_exclusion() && no_genuine_partner(eq, box, domain, 1024, &cover))
-      record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0});
+      record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0, K[0], {K[1], K[2]}});
   };
   bool first = true;
   double t_done = tc.mid();
@@ -717,11 +720,13 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     if ((dir > 0 ? T.hi : -T.lo) <= (dir > 0 ? t_done : -t_done)) continue;  // proved by the chain
     if (float_genuine[idx[j]] || float_genuine[idx[j + 1]]) break;
     if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) break;
-    if (record) record->spans.push_back({T, {}, 0});  // (no partner in the domain over the strip)
+    if (record)  // (no partner in the domain over the strip)
+      record->spans.push_back({T, {}, 0, axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1)});
     for (std::size_t k : {j, j + 1})
       if (out.point_status[idx[k]] == Partner_status::undecided) out.point_status[idx[k]] = Partner_status::phantom;
     covered = std::max(covered, std::fabs((dir > 0 ? T.hi : T.lo) - tc.mid()));
   }
+  if (record) record->t_decided = tc.mid() + (dir > 0 ? covered : -covered);
   return std::max(0.0, 1 - covered / full);
 }
 

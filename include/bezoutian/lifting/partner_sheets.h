@@ -392,6 +392,33 @@ inline void prove_piece_folds(const Partner_equations& eq, const Parameter_box& 
     }
 }
 
+/// The traced points of a half-branch piece (among them those the refinement added) inside the proved spans of
+/// its chain: phantom where the span has no partner in the domain; where it has one, the sheet whose partner lies
+/// in the span's box Y is that partner, genuine (the chain proved its status from the image K_y of the span's zero
+/// curve, inside the domain), with K_y as its enclosure.
+inline void mark_half_branch_points(const Curve_topology_edge& e, const Curve_topology_piece& pc,
+                                    const Half_branch_chain& chain, Edge_sheets& out) {
+  for (std::size_t i = pc.first; i <= pc.last && i < e.polyline.size(); ++i) {
+    const double t = e.polyline[i][std::size_t(chain.axis)];
+    for (const Half_branch_span& sp : chain.spans) {
+      if (sp.partners < 0 || !(sp.T.lo <= t && t <= sp.T.hi)) continue;
+      if (sp.partners == 0) {
+        out.phantom_proved[i] = 1;
+        break;
+      }
+      for (Partner_sheet& S : out.sheets) {
+        if (i < S.first || i > S.last()) continue;
+        const std::array<double, 2>& y = S.partner[i - S.first];
+        if (sp.Y[0].lo <= y[0] && y[0] <= sp.Y[0].hi && sp.Y[1].lo <= y[1] && y[1] <= sp.Y[1].hi) {
+          S.genuine_proved[i - S.first] = 1;
+          S.enclosure[i - S.first] = sp.partner;
+        }
+      }
+      break;
+    }
+  }
+}
+
 /// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
 /// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
 /// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
@@ -467,6 +494,7 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       status_open += len;  // (the status: certify_half_branch)
       const Half_branch_chain* chain = chains && !unbounded ? chains->find(pc) : nullptr;
       undecided += len * (1 - (chain ? half_branch_fibre_share(eq, domain, e, pc, *chain, out.sheets) : 0));
+      if (chain) mark_half_branch_points(e, pc, *chain, out);
       continue;
     }
     const int axis = pc.graph_axis, other = 1 - axis;

@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <deque>
+#include <limits>
 #include <vector>
 
 namespace bezoutian {
@@ -31,6 +32,12 @@ struct Half_branch_span {
   /// the number of partners in the domain of each point of H over T: 0 or 1; -1: T is the singular point's own
   /// certified box (widened by a few ulps), not counted as undecided
   int partners = 0;
+  /// a range O of the other coordinate such that H over T lies in the region T x O and every point of that
+  /// region with a partner in the domain lies on H (the fibre exclusion over T x K_other, or a strip with no
+  /// partner at all); empty (NaN) where the span claims nothing about other points (beside_half_branches.h)
+  Double_interval other{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  /// (`partners` 1) the image K_y of the zero curve's partner over T: inside the domain (the genuine status)
+  std::array<Double_interval, 2> partner;
 };
 
 /// The proved spans of one half-branch piece.
@@ -38,6 +45,7 @@ struct Half_branch_chain {
   Parameter_box cell, crossing;  ///< the piece's cell and the crossing it starts from (identify the piece)
   int axis = 0;                  ///< t is the coordinate axis (0: u, 1: the other)
   double t_crossing = 0, t_end = 0;  ///< t at the crossing and at the far end (the singular or fold point)
+  double t_decided = 0;  ///< the statuses are proved on the stretch from t_crossing to t_decided
   std::vector<Half_branch_span> spans;
 };
 
@@ -61,6 +69,16 @@ class Half_branch_chains {
     for (const Half_branch_chain& c : chains_)
       if (same(c.cell, pc.cell) && same(c.crossing, pc.crossing)) return &c;
     return nullptr;
+  }
+  Half_branch_chain* find(const Curve_topology_piece& pc) {
+    return const_cast<Half_branch_chain*>(static_cast<const Half_branch_chains*>(this)->find(pc));
+  }
+  /// the chains of the other half-branches of pc's cell
+  std::vector<const Half_branch_chain*> beside(const Curve_topology_piece& pc) const {
+    std::vector<const Half_branch_chain*> out;
+    for (const Half_branch_chain& c : chains_)
+      if (same(c.cell, pc.cell) && !same(c.crossing, pc.crossing)) out.push_back(&c);
+    return out;
   }
 
  private:
