@@ -37,11 +37,11 @@ struct Intersect_options {
   std::string patches;              // patches: "I,J" indices (0-based) of the patches to use (default 0,1 / 0)
   bool json = false;
   // Resource limits (bezoutian::Intersection_limits; the defaults are the library's)
-  double time_limit = 0;               // seconds for the whole command (0: none); curves also check it between stages
-  int max_input_degree = 64;           // curves, curve/patch: largest degree of a curve, of a patch in u and in v
-  long max_control_points = 4225;      // curves, curve/patch: largest number of control points of one object
+  double time_limit = 0;               // seconds for the whole command (0: none), checked between the stages
+  int max_input_degree = 64;           // largest degree of a curve, of a patch in u and in v
+  long max_control_points = 4225;      // largest number of control points of one object
   long max_degree_product = 1024;      // curves: deg C1 deg C2; curve/patch: 2 m n deg C
-  long max_coefficient_bits = 4096;    // curves, curve/patch: largest numerator/denominator of a control point
+  long max_coefficient_bits = 4096;    // largest numerator/denominator of a control point
 };
 
 /// The library's resource limits from the options (defined in examples/cli/curve_intersect.cpp).

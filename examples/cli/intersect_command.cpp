@@ -31,17 +31,17 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
   sub->add_option("--domain", *domain, "patches: partner domain v0,v1,s0,s1 (default 0,1,0,1) or 'none'");
   sub->add_flag("--json", o->json, "machine-readable output");
   sub->add_option("--time-limit", o->time_limit,
-                  "stop after this many seconds with 'time_limit exceeded' and exit status 4; curves and curve/patch "
-                  "check it between the stages and name the stage, and the command ends at the latest 1 s after the "
-                  "limit (default 0: none)");
+                  "stop after this many seconds with 'time_limit exceeded' and exit status 4; the stages check it in "
+                  "between and the message names the stage, and the command ends at the latest 1 s after the limit "
+                  "(default 0: none)");
   sub->add_option("--max-input-degree", o->max_input_degree,
-                  "curves, curve/patch: refuse a curve, or a patch in u or v, of higher degree (default 64)");
+                  "refuse a curve, or a patch in u or v, of higher degree (default 64)");
   sub->add_option("--max-control-points", o->max_control_points,
-                  "curves, curve/patch: refuse an object with more control points (default 4225)");
+                  "refuse an object (curve or patch) with more control points (default 4225)");
   sub->add_option("--max-degree-product", o->max_degree_product,
                   "curves: refuse deg C1 x deg C2 above this (the Bezout number); curve/patch: 2 m n deg C (default 1024)");
   sub->add_option("--max-coefficient-bits", o->max_coefficient_bits,
-                  "curves, curve/patch: refuse a control point coordinate whose numerator or denominator has more bits "
+                  "refuse a control point coordinate whose numerator or denominator has more bits "
                   "(default 4096)");
   sub->callback([o] {
     bezoutian_cli::start_time_limit(o->time_limit, "intersect");

@@ -554,7 +554,7 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
                             const bezoutian::Surface_intersection_options& so) {
   bezoutian::Surface_intersection_options first = so;
   first.max_total_degree_for_topology = 0;
-  auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = std::chrono::steady_clock::now();
   bezoutian::Surface_locus L =
       self ? bezoutian::self_intersection_locus(a, first) : bezoutian::intersection_locus(a, *b, first);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -594,7 +594,12 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
     close(fd[1]);
     int rc = 0;
     try {
-      report(self, a, b, o, so);
+      bezoutian::Surface_intersection_options again = so;  // (the time budget: what the first computation left)
+      if (so.limits.time_limit > 0) again.limits.time_limit = std::max(1e-3, so.limits.time_limit - seconds);
+      report(self, a, b, o, again);
+    } catch (const bezoutian::Limit_exceeded& e) {
+      std::cerr << "bezoutian: error: " << e.what() << "\n";
+      rc = limit_exit_status;
     } catch (const bezoutian::Error& e) {
       std::cerr << "bezoutian: error: " << e.what() << "\n";
       rc = 2;
@@ -641,6 +646,8 @@ bool report_with_time_limit(bool self, const Patch& a, const Patch* b, const Int
     why << "was stopped after " << o.fallback_seconds << " s (--fallback-seconds)";
   else if (WIFSIGNALED(status))
     why << "ended with signal " << WTERMSIG(status) << " (" << strsignal(WTERMSIG(status)) << ")";
+  else if (WIFEXITED(status) && WEXITSTATUS(status) == limit_exit_status)
+    why << "was stopped by the time limit (--time-limit " << o.time_limit << " s, its message above)";
   else
     why << "failed (exit code " << WEXITSTATUS(status) << ", its error above)";
   const std::string not_attempted = "CGAL's whole-plane curve analysis is not attempted above "
@@ -667,6 +674,8 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   so.polyline_tolerance = o.polyline_tolerance;
   so.max_total_degree_for_topology = o.max_degree;
   so.whole_plane_topology = bezoutian::Cgal_curve_analysis{};
+  // the input size limits and the time budget, checked by the library (Limit_exceeded names the limit and the stage)
+  so.limits = intersection_limits(o);
   if (!(o.fallback_seconds >= 0)) throw bezoutian::Invalid_input("--fallback-seconds must be >= 0 (0: no limit)");
 #if defined(__unix__)
   if (o.max_degree > 0 && o.fallback_seconds > 0 && report_with_time_limit(self, a, b, o, so)) return;
@@ -737,7 +746,16 @@ Register self_registration([](CLI::App& app) {
                   "stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: no limit; "
                   "POSIX systems)");
   sub->add_flag("--json", o->json, "machine-readable output");
+  sub->add_option("--time-limit", o->time_limit,
+                  "stop after this many seconds with 'time_limit exceeded', naming the stage, and exit status 4 (the "
+                  "stages check it in between; the command ends at the latest 1 s after the limit; default 0: none)");
+  sub->add_option("--max-input-degree", o->max_input_degree, "refuse a patch of higher degree in u or v (default 64)");
+  sub->add_option("--max-control-points", o->max_control_points,
+                  "refuse a patch with more control points (default 4225)");
+  sub->add_option("--max-coefficient-bits", o->max_coefficient_bits,
+                  "refuse a control point coordinate whose numerator or denominator has more bits (default 4096)");
   sub->callback([o, domain] {
+    start_time_limit(o->time_limit, "self-intersect");
     Patch p = patch_of(o->file_a, patch_indices(o->patches, true).first);
     run(true, p, nullptr, *o, *domain);
   });
