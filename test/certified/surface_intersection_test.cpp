@@ -2416,9 +2416,9 @@ TEST_CASE("torus and a bitangent plane, parameters exchanged: a phantom half-bra
   // (the tangent point), and run through one singular box of the subdivision there. The phantom arc's strip holds
   // the genuine one, so it is proved phantom beside the genuine arc's proved spans
   // (lifting/internal/beside_half_branches.h), and the genuine half-branch is refined to the tolerance along its
-  // chain. What stays open lies within 1e-6 of the corner, where the two arcs meet and the partner reaches the
-  // torus patch's side.
-  CHECK(check_villarceau_arc(true) < 1e-6);
+  // chain. Its partner reaches the torus patch's side at the corner: the last pieces of its chain are decided
+  // beside that exact point (lifting/internal/exact_point_spans.h).
+  CHECK(check_villarceau_arc(true) == 0);
 }
 
 TEST_CASE("limits: surface intersection refuses oversized patches and stops at its time budget, naming the stage",

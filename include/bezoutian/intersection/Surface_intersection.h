@@ -94,7 +94,8 @@ struct Surface_intersection_options {
   /// the count lasts; the others keep Locus_arc::fibre_undecided_fraction > 0.
   std::size_t max_complete_fibres = 2000;
   /// At most this many exclusion tests (each up to 1024 partner pieces) for the phantom proofs of one locus, and as
-  /// many again for the fallback on spans without a followed partner (lifting/certified_lifting.h); the spans
+  /// many again for the fallback on spans without a followed partner (lifting/certified_lifting.h), and four times as
+  /// many for the half-branches proved beside others (lifting/internal/beside_half_branches.h); the spans
   /// left when it is spent stay undecided (status_proved false). Bounds the cost on large phantom loci
   /// (doc/surface_intersection.md, step 4b, gives the measured trade-off).
   std::size_t lifting_exclusion_budget = 5000;
@@ -909,6 +910,10 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   // half-branches left open where another half-branch of their singular box runs through their strip: proved
   // phantom beside that one's proved spans (lifting/internal/beside_half_branches.h), once every chain is known
   if (!chains || o.partner_domain_unbounded) return;
+  // (a budget of their own, four times the fallback's: the descent towards a singular point costs about a hundred
+  // tests per piece, over about fifty pieces from 1e-7 to a few ulps)
+  Exclusion_budget beside;
+  beside.left = beside.fallback_left = 4 * o.lifting_exclusion_budget;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     if (!(arc.undecided_fraction > 0) || !(length[k] > 0)) continue;
@@ -923,7 +928,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
       if (pc.graph_axis < 0 && pc.last < e.polyline.size() && pc.first < pc.last)
         decided += (std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
                     std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1])) *
-                   prove_beside_half_branches(eq, o.partner_domain, e, pc, float_genuine_of[k], *chains, budget, status);
+                   prove_beside_half_branches(eq, o.partner_domain, e, pc, float_genuine_of[k], *chains, beside, status);
     if (!(decided > 0)) continue;
     arc.undecided_fraction = std::max(0.0, arc.undecided_fraction - decided / length[k]);
     for (std::size_t i = 0; i < arc.points.size(); ++i)

@@ -23,6 +23,7 @@
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/lifting/internal/beside_half_branches.h>
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
+#include <bezoutian/lifting/internal/exact_point_spans.h>
 #include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/double_partner_witness.h>
 #include <bezoutian/lifting/internal/kernel_partner_proofs.h>
@@ -36,6 +37,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace bezoutian {
@@ -683,9 +685,28 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     // a piece that fails is shrunk towards t_done, up to 10 times, and the next pieces keep that share of the
     // distance to p (about 570 pieces at a sixteenth each from a traced span to an ulp of p)
     int shrink = 0;
+    // p exact, with its partner exactly on the partner domain's boundary (the Villarceau arc ending at the plane's
+    // corner, its partner on the torus patch's side): the partner comes within rounding of the side as t nears p,
+    // and the pieces' statuses are decided beside that exact point (exact_point_spans.h); found once, by Newton's
+    // method at p from the first piece that needs it
+    std::optional<std::optional<Partner_boundary_point>> exact_p;
+    auto exact_end = [&]() -> const Partner_boundary_point* {
+      if (!exact_p) {
+        exact_p.emplace();
+        std::array<double, 3> w{W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()};
+        if (!unbounded && p_box[0] == p_box[1] && p_box[2] == p_box[3] &&
+            solve_partner_equations(eq, axis, p_box[2 * axis], w))
+          if (const auto x = exact_boundary_point(eq, domain, {p_box[0], p_box[2]}, {w[1], w[2]}))
+            if (x->x[0] == Rational(p_box[0]) && x->x[1] == Rational(p_box[2])) *exact_p = x;
+      }
+      return *exact_p ? &**exact_p : nullptr;
+    };
+    // (the zero curve is the half-branch, which lies in its cell: its other coordinate is in the cell's range)
+    const D cell_other = axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1);
     for (int step = 0; step < 1000 && (p_near - t_done) * dir > 0; ++step) {
       const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
-      const double end = (p_near - half) * dir <= ulps ? p_near : half;
+      // (the whole rest once it is a few ulps, or once half-way rounds to t_done; dir is the first span's step)
+      const double end = (dir > 0 ? p_near - half : half - p_near) <= ulps || half == t_done ? p_near : half;
       const D T = dir > 0 ? D{t_done, end} : D{end, t_done};
       std::array<D, 3> W, K;
       bool ok = predict_partner_box(eq, axis, T, {W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()}, W) &&
@@ -696,8 +717,15 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
         ok = both[c].lo <= both[c].hi;
       }
       ok = ok && parametric_partner_krawczyk(eq, axis, D{t_done, t_done}, both);
-      const Partner_status st = ok ? status_from_partner(eq, domain, unbounded, axis, T, K, nullptr)
-                                   : Partner_status::undecided;
+      Partner_status st = ok ? status_from_partner(eq, domain, unbounded, axis, T, K, nullptr)
+                             : Partner_status::undecided;
+      if (st == Partner_status::undecided && ok && exact_end()) {
+        std::array<D, 3> K_cell = K;
+        K_cell[0] = D{std::max(K[0].lo, cell_other.lo), std::min(K[0].hi, cell_other.hi)};
+        if (K_cell[0].lo <= K_cell[0].hi &&
+            status_beside_exact_point(eq, domain, axis, T, K_cell, *exact_end()) == Partner_status::genuine)
+          st = Partner_status::genuine;
+      }
       if (st == Partner_status::undecided) {
         if (++shrink > 10) break;
         continue;

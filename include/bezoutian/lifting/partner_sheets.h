@@ -101,34 +101,6 @@ inline std::vector<std::array<double, 2>> fibre_partners(const Partner_equations
   return out;
 }
 
-/// Newton's method on the three partner equations E(z) = 0 with the graph coordinate z_axis = t fixed, in the
-/// unknowns w = (the other coordinate, y1, y2), from w; true if the last step is below 1e-13 (relative).
-inline bool solve_partner_equations(const Partner_equations& eq, int axis, double t, std::array<double, 3>& w) {
-  using C = std::complex<double>;
-  const int q[3] = {1 - axis, 2, 3};
-  for (int it = 0; it < 20; ++it) {
-    std::array<C, 4> z;
-    z[std::size_t(axis)] = t;
-    for (int c = 0; c < 3; ++c) z[std::size_t(q[c])] = w[std::size_t(c)];
-    std::array<C, 3> E;
-    std::array<std::array<C, 4>, 3> J;
-    eq.evaluate(z, E, J);
-    double A[3][3], Ai[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) A[r][c] = J[std::size_t(r)][std::size_t(q[c])].real();
-    if (!invert_3x3(A, Ai)) return false;
-    double step = 0;
-    for (int r = 0; r < 3; ++r) {
-      const double d = Ai[r][0] * E[0].real() + Ai[r][1] * E[1].real() + Ai[r][2] * E[2].real();
-      w[std::size_t(r)] -= d;
-      step += std::fabs(d);
-    }
-    if (!std::isfinite(step) || step > 1) return false;
-    if (step <= 1e-13 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2]))) return true;
-  }
-  return false;
-}
-
 /// Chains the fibres of consecutive polyline points into sheets: each sheet ending at the previous point takes the
 /// nearest unclaimed partner to its prediction (linear from its last two points), if nearer than a quarter plus
 /// four times its last step; partners left over start new sheets. (Floating point: a wrong chain only makes its

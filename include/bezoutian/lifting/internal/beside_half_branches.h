@@ -138,15 +138,18 @@ inline double prove_beside_half_branches(const Partner_equations& eq, const Para
     t_done = b;
   }
   // the span reaching p: pieces of a fixed share of the distance left, down to p's certified box (widened by a
-  // few ulps; p is the vertex, with its own certificate), as the chain descends
+  // few ulps; p is the vertex, with its own certificate), as the chain descends. The other chains end 8 ulps from
+  // p in their own coordinate, and their branches run on into p without a region there: this descent stops 64
+  // ulps from p's box, and that sliver is not counted, as p's box is not.
   const auto& p_box = pc.singular_end == 0 ? pc.first_box : pc.last_box;
-  const double ulps = 8 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(t_c));
+  const double ulps = 64 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(t_c));
   const double p_near = dir > 0 ? p_box[2 * axis] - ulps : p_box[2 * axis + 1] + ulps;
   if (t_done != t_at(m - 2) || float_genuine[idx[m - 2]]) return finish();
   int shrink = 0;
   for (int step = 0; step < 200 && (p_near - t_done) * dir > 0; ++step) {
     const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
-    const double end = (p_near - half) * dir <= ulps ? p_near : half;
+    // (the whole rest once it is a few ulps, or once half-way rounds to t_done)
+    const double end = (p_near - half) * dir <= ulps || half == t_done ? p_near : half;
     const D T = dir > 0 ? D{t_done, end} : D{end, t_done};
     if (!excluded(T)) {
       if (++shrink > 6) break;

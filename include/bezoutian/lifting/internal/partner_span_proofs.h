@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -75,6 +76,34 @@ inline bool invert_3x3(const double (&A)[3][3], double (&C)[3][3]) {
       C[r][c] = (A[r1][c1] * A[r2][c2] - A[r1][c2] * A[r2][c1]) / det;  // adjugate / det
     }
   return true;
+}
+
+/// Newton's method on the three partner equations E(z) = 0 with the graph coordinate z_axis = t fixed, in the
+/// unknowns w = (the other coordinate, y1, y2), from w; true if the last step is below 1e-13 (relative).
+inline bool solve_partner_equations(const Partner_equations& eq, int axis, double t, std::array<double, 3>& w) {
+  using C = std::complex<double>;
+  const int q[3] = {1 - axis, 2, 3};
+  for (int it = 0; it < 20; ++it) {
+    std::array<C, 4> z;
+    z[std::size_t(axis)] = t;
+    for (int c = 0; c < 3; ++c) z[std::size_t(q[c])] = w[std::size_t(c)];
+    std::array<C, 3> E;
+    std::array<std::array<C, 4>, 3> J;
+    eq.evaluate(z, E, J);
+    double A[3][3], Ai[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) A[r][c] = J[std::size_t(r)][std::size_t(q[c])].real();
+    if (!invert_3x3(A, Ai)) return false;
+    double step = 0;
+    for (int r = 0; r < 3; ++r) {
+      const double d = Ai[r][0] * E[0].real() + Ai[r][1] * E[1].real() + Ai[r][2] * E[2].real();
+      w[std::size_t(r)] -= d;
+      step += std::fabs(d);
+    }
+    if (!std::isfinite(step) || step > 1) return false;
+    if (step <= 1e-13 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2]))) return true;
+  }
+  return false;
 }
 
 /// Parametric Krawczyk test (see the header comment). axis: index of the graph coordinate in z = (x1, x2, y1, y2)
