@@ -914,6 +914,9 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   // tests per piece, over about fifty pieces from 1e-7 to a few ulps)
   Exclusion_budget beside;
   beside.left = beside.fallback_left = 4 * o.lifting_exclusion_budget;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k)  // (the fibres of proved spans)
+    for (const Curve_topology_piece& pc : L.topology.edges[k].pieces)
+      if (pc.graph_axis < 0) prove_fibres_beside_half_branches(eq, o.partner_domain, pc, *chains, beside);
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     Locus_arc& arc = L.arcs[k];
     if (!(arc.undecided_fraction > 0) || !(length[k] > 0)) continue;

@@ -82,8 +82,9 @@ inline std::vector<bool> exclude_strips(const Partner_equations& eq, const Param
       return axis == 0 ? Parameter_box{s0, s1, o0, o1} : Parameter_box{o0, o1, s0, s1};
     };
     // about square boxes of side min(width, range), at most 16 (the halving refines them)
-    const int along = std::max(1, std::min(16, int(std::ceil(width / std::max(range, 1e-300))))),
-              across = std::max(1, std::min(16, int(std::ceil(range / std::max(width, 1e-300)))));
+    // (the ratios are clamped as doubles: a span of width 0 makes one of them 1e300, beyond int)
+    const int along = int(std::max(1.0, std::min(16.0, std::ceil(width / std::max(range, 1e-300))))),
+              across = int(std::max(1.0, std::min(16.0, std::ceil(range / std::max(width, 1e-300)))));
     struct Piece {
       Rational s0, s1, o0, o1;  // graph coordinate, other coordinate
     };
@@ -611,6 +612,8 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, box, domain), {{hole[1], hole[2]}});
     if (chains->take_exclusion() && no_genuine_partner(eq, box, domain, 1024, &cover))
       record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0, K[0], {K[1], K[2]}});
+    else
+      record->open_fibres.push_back({T, K[0], {hole[1], hole[2]}, {K[1], K[2]}, st == Partner_status::genuine ? 1 : 0});
   };
   bool first = true;
   double t_done = tc.mid();

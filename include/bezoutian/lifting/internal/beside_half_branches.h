@@ -53,10 +53,12 @@ inline std::vector<Cell_region> subtract_region(const std::vector<Cell_region>& 
   return out;
 }
 
-/// Whether no point of the box has a partner in the domain: no_genuine_partner, the box halved along its longer
-/// side while the test fails, down to sides of `min_side`, within `max_tests` tests.
+/// Whether no point of the box has a partner in the domain (outside the partner box `hole`, if given):
+/// no_genuine_partner, the box halved along its longer side while the test fails, down to sides of `min_side`,
+/// within `max_tests` tests.
 inline bool no_partner_in_region(const Partner_equations& eq, const Parameter_box& domain, const Cell_region& box,
-                                 double min_side, std::size_t& tests, std::size_t max_tests, Exclusion_budget& budget) {
+                                 double min_side, std::size_t& tests, std::size_t max_tests, Exclusion_budget& budget,
+                                 const std::array<Double_interval, 2>* hole = nullptr) {
   using D = Double_interval;
   std::vector<Cell_region> todo{box};
   while (!todo.empty()) {
@@ -65,7 +67,11 @@ inline bool no_partner_in_region(const Partner_equations& eq, const Parameter_bo
     if (tests >= max_tests || !budget.take_fallback()) return false;
     ++tests;
     const Parameter_box pb{Rational(b[0].lo), Rational(b[0].hi), Rational(b[1].lo), Rational(b[1].hi)};
-    if (no_genuine_partner(eq, pb, domain, 256, nullptr)) continue;
+    if (!hole && no_genuine_partner(eq, pb, domain, 256, nullptr)) continue;
+    if (hole) {
+      const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, pb, domain), {*hole});
+      if (no_genuine_partner(eq, pb, domain, 1024, &cover)) continue;
+    }
     const int c = b[0].hi - b[0].lo >= b[1].hi - b[1].lo ? 0 : 1;
     if (!(b[c].hi - b[c].lo > min_side)) return false;
     const double m = b[c].mid();
@@ -76,6 +82,48 @@ inline bool no_partner_in_region(const Partner_equations& eq, const Parameter_bo
     todo.push_back(lo);
   }
   return true;
+}
+
+/// The regions of the other chains of pc's cell (see the header comment), in (u, v).
+inline std::vector<Cell_region> regions_beside(const Half_branch_chains& chains, const Curve_topology_piece& pc) {
+  std::vector<Cell_region> regions;
+  for (const Half_branch_chain* c : chains.beside(pc))
+    for (const Half_branch_span& s : c->spans)
+      if (s.partners >= 0 && s.other.lo <= s.other.hi)
+        regions.push_back(c->axis == 0 ? Cell_region{s.T, s.other} : Cell_region{s.other, s.T});
+  return regions;
+}
+
+/// The fibre of the spans of pc's chain whose own exclusion failed (Half_branch_open_fibre), proved beside the
+/// other half-branches: a point x of pc's branch H over T has its partners in the domain inside the hole's box if
+/// no point of (T x K_other) minus the other chains' regions has one outside it, because x is in no such region
+/// (a point there with a partner in the domain lies on the other branch, which meets H only at p; and a point of
+/// H over a genuine span has one). Next to a node, where the two branches pass close by, the other branch's
+/// points in T x K_other have their partners outside the hole, and the exclusion over the whole box must fail.
+/// The spans proved this way are recorded without a region of their own.
+inline void prove_fibres_beside_half_branches(const Partner_equations& eq, const Parameter_box& domain,
+                                              const Curve_topology_piece& pc, Half_branch_chains& chains,
+                                              Exclusion_budget& budget) {
+  Half_branch_chain* chain = chains.find(pc);
+  if (!chain || chain->open_fibres.empty()) return;
+  const std::vector<Cell_region> regions = regions_beside(chains, pc);
+  if (regions.empty()) return;
+  std::vector<Half_branch_open_fibre> still_open;
+  for (const Half_branch_open_fibre& f : chain->open_fibres) {
+    std::vector<Cell_region> rest{chain->axis == 0 ? Cell_region{f.T, f.other} : Cell_region{f.other, f.T}};
+    for (const Cell_region& r : regions) rest = subtract_region(rest, r);
+    const double min_side = std::min(f.T.hi - f.T.lo, f.other.hi - f.other.lo) / 64;
+    std::size_t tests = 0;
+    bool proved = true;
+    for (const Cell_region& b : rest)
+      if (!(proved = no_partner_in_region(eq, domain, b, min_side, tests, 64, budget, &f.hole))) break;
+    if (proved)
+      chain->spans.push_back({f.T, f.hole, f.partners, {std::numeric_limits<double>::quiet_NaN(),
+                                                        std::numeric_limits<double>::quiet_NaN()}, f.partner});
+    else
+      still_open.push_back(f);
+  }
+  chain->open_fibres = std::move(still_open);
 }
 
 /// Continues the proof of a half-branch piece pc beyond the stretch its own chain decided (from its crossing to
@@ -90,11 +138,7 @@ inline double prove_beside_half_branches(const Partner_equations& eq, const Para
   using D = Double_interval;
   Half_branch_chain* chain = chains.find(pc);
   if (!chain || pc.singular_end < 0 || pc.last >= e.polyline.size() || pc.first >= pc.last) return 0;
-  std::vector<Cell_region> regions;
-  for (const Half_branch_chain* c : chains.beside(pc))
-    for (const Half_branch_span& s : c->spans)
-      if (s.partners >= 0 && s.other.lo <= s.other.hi)
-        regions.push_back(c->axis == 0 ? Cell_region{s.T, s.other} : Cell_region{s.other, s.T});
+  const std::vector<Cell_region> regions = regions_beside(chains, pc);
   if (regions.empty()) return 0;
   const int axis = chain->axis;
   std::vector<std::size_t> idx;  // from the crossing to the singular point

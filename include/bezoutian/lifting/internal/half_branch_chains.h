@@ -40,6 +40,14 @@ struct Half_branch_span {
   std::array<Double_interval, 2> partner;
 };
 
+/// A span whose status the chain proved but whose fibre exclusion failed (on T x K_other, outside the hole): tried
+/// again beside the other half-branches of the cell (beside_half_branches.h).
+struct Half_branch_open_fibre {
+  Double_interval T, other;                       ///< the span and K_other
+  std::array<Double_interval, 2> hole, partner;   ///< the hole's partner box and K_y
+  int partners = 0;                               ///< 1 (genuine) or 0 (phantom)
+};
+
 /// The proved spans of one half-branch piece.
 struct Half_branch_chain {
   Parameter_box cell, crossing;  ///< the piece's cell and the crossing it starts from (identify the piece)
@@ -47,6 +55,7 @@ struct Half_branch_chain {
   double t_crossing = 0, t_end = 0;  ///< t at the crossing and at the far end (the singular or fold point)
   double t_decided = 0;  ///< the statuses are proved on the stretch from t_crossing to t_decided
   std::vector<Half_branch_span> spans;
+  std::vector<Half_branch_open_fibre> open_fibres;
 };
 
 /// The chains of one locus, filled by the status proof and read by the complete lifting. Their exclusions have a
