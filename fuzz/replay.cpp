@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
                             {"expression", bezoutian::fuzz::polynomial_expression},
                             {"dat", bezoutian::fuzz::cgal_dat},
                             {"bpt", bezoutian::fuzz::bpt},
-                            {"curves", bezoutian::fuzz::planar_curves}};
+                            {"curves", bezoutian::fuzz::planar_curves},
+                            {"patches", bezoutian::fuzz::small_patches}};
   int status = 0;
   for (const Target& t : targets) {
     const std::size_t corpus = replay_folder(root / "corpus" / t.name, t);

@@ -3,6 +3,7 @@
 // The bytes are decoded straight into a problem (no text): a header byte, then the curves. The answer is checked
 // with exact rational interval arithmetic written here (de Casteljau on intervals), not with the library's own
 // evaluation, so a wrong point cannot pass by sharing a mistake with the code under test.
+#include "byte_reader.h"
 #include "targets.h"
 
 #include <bezoutian/intersection/Curve_intersection.h>
@@ -21,18 +22,6 @@ namespace {
 
 using Curve = Rational_bezier_curve<Rational, 2>;
 using Hpoint = Curve::Homogeneous_point;
-
-// Past the end every byte reads as 0, so that every input decodes to a problem.
-class Byte_reader {
- public:
-  Byte_reader(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t next() { return pos_ < size_ ? data_[pos_++] : 0; }
-  int next_signed() { return int(static_cast<std::int8_t>(next())); }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_, pos_ = 0;
-};
 
 // Header byte: bit 0 self-intersection, bit 1 rational, bit 2 weights of any sign (0 included), bits 3-4 the
 // coordinate alphabet, bits 5-7 the method (mostly the default one).

@@ -43,6 +43,15 @@ void bpt(const std::uint8_t* data, std::size_t size);
 /// the first curve gives an overlap and a curve through C1(sigma) the point (sigma, 0).
 void planar_curves(const std::uint8_t* data, std::size_t size);
 
+/// \brief Surface intersections: the bytes decode to one or two rational Bezier patches of bi-degree at most
+/// (2, 2) with small coordinates (header byte: self_intersection_locus() or intersection_locus(), polynomial or
+/// rational, weights of any sign, coordinate alphabet; the second patch independent, the first's transposed net,
+/// a sub-patch of it, or it with a control point moved), solved with tight limits (degree 2, 64-bit
+/// coefficients, time_limit 2 s, no whole-plane analysis). Refusals are Invalid_input and Limit_exceeded. Every
+/// traced point proved genuine has both parameter points in [0, 1]^2 (distinct for a self-intersection), a
+/// partner enclosure, and one 3D point up to 1e-5 of the patches' size (an evaluation written in the target).
+void small_patches(const std::uint8_t* data, std::size_t size);
+
 /// Prints the reason (and the input being replayed, if any) to stderr and aborts.
 [[noreturn]] void fuzz_failure(const std::string& reason);
 

@@ -1044,6 +1044,8 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
     auto attempt = [&](bool every_partner) {
       std::vector<std::vector<std::array<double, 2>>> fibres;
       for (std::size_t i = 0; i < e.polyline.size(); ++i) {
+        // (the fibres cost about half a millisecond each, and an arc may have thousands of points: checked within)
+        if (time && i % 64 == 63) time->check("complete lifting");
         const Locus_point& q = arc.points[i];
         const bool usable = verified(q) && !(L.self_intersection && std::fabs(q.partner[0]) + std::fabs(q.partner[1]) <= 1e-9);
         fibres.push_back(every_partner ? fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, e.polyline[i],
@@ -1053,6 +1055,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
       if (o.polyline_tolerance > 0 && inserted < o.max_refinement_points) {
         Arc_refinement_model model;
         model.fibre = [&](const std::array<double, 2>& x) {
+          if (time) time->check("complete lifting");
           return every_partner ? fibre_partners(eq, o.partner_domain, o.partner_domain_unbounded, x, nullptr)
                                : kernel_fibre(x, lift_point(x[0], x[1], nullptr));
         };
