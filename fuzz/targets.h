@@ -47,7 +47,8 @@ void planar_curves(const std::uint8_t* data, std::size_t size);
 /// (2, 2) with small coordinates (header byte: self_intersection_locus() or intersection_locus(), polynomial or
 /// rational, weights of any sign, coordinate alphabet; the second patch independent, the first's transposed net,
 /// a sub-patch of it, or it with a control point moved), solved with tight limits (degree 2, 64-bit
-/// coefficients, time_limit 2 s, no whole-plane analysis). Refusals are Invalid_input and Limit_exceeded. Every
+/// coefficients, time_limit 2 s, no whole-plane analysis). Refusals are Invalid_input, Limit_exceeded and the
+/// Error of boundary contacts that the curve engine does not decide. Every
 /// traced point proved genuine has both parameter points in [0, 1]^2 (distinct for a self-intersection), a
 /// partner enclosure, and one 3D point up to 1e-5 of the patches' size (an evaluation written in the target).
 void small_patches(const std::uint8_t* data, std::size_t size);

@@ -1459,7 +1459,15 @@ inline std::vector<Boundary_contact> boundary_contacts(const Rational_bezier_pat
     const Curve c1 = phi.boundary_curve<Curve>(s1);
     for (int s2 = 0; s2 < 4; ++s2) {
       const Curve c2 = psi.boundary_curve<Curve>(s2);
-      const Curve_intersection_result r = intersect_curves(c1, c2);
+      Curve_intersection_result r;
+      try {
+        r = intersect_curves(c1, c2);
+      } catch (const Limit_exceeded&) {
+        throw;
+      } catch (const Error& e) {  // (a documented limitation of the curve engine: named as this call's)
+        throw Error("intersection_locus: the contacts of side " + std::to_string(s1) + " of the first patch and side " +
+                    std::to_string(s2) + " of the second are not decided: " + e.what());
+      }
       const bool collapsed = is_point(c1) || is_point(c2);
       for (const auto& ov : r.overlaps) {
         Boundary_contact b{s1, s2, !collapsed, ov.s0, ov.s1, ov.t0, ov.t1, approx(c1, ov.s0)};
