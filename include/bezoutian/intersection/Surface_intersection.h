@@ -670,10 +670,21 @@ inline void mark_ends_on_edge_lines(Surface_locus& L, const Surface_intersection
           continue;
         }
         if (!x) x = explain(e, o, phi, psi);
-        const double nan = std::numeric_limits<double>::quiet_NaN();
         q = edge_line_point(*x, e.side, o, phi, psi, vertical ? CGAL::to_double(e.value) : q.projection[0],
                             vertical ? q.projection[1] : CGAL::to_double(e.value));
-        q.partner_enclosure = {{{nan, nan}, {nan, nan}}};
+        // the partner's enclosure: on the partner's iso-curve at cp, its free coordinate somewhere in the partner
+        // domain's range (edge_line_point: Q on M, the pair's coordinates (g, cp) or (cp, g); offsets for a
+        // self-intersection), rounded outward
+        using D = Double_interval;
+        const D cp = D::of(x->partner_value);
+        const D free = vertical ? D::hull(o.partner_domain.v0, o.partner_domain.v1)
+                                : D::hull(o.partner_domain.u0, o.partner_domain.u1);
+        auto minus = [](const D& a, double b) { return D{D::next(a.lo - b, false), D::next(a.hi - b, true)}; };
+        std::array<D, 2> y = vertical ? std::array<D, 2>{free, cp} : std::array<D, 2>{cp, free};
+        if (!psi)
+          y = vertical ? std::array<D, 2>{minus(cp, q.projection[0]), minus(free, q.projection[1])}
+                       : std::array<D, 2>{minus(free, q.projection[0]), minus(cp, q.projection[1])};
+        q.partner_enclosure = {{{y[0].lo, y[0].hi}, {y[1].lo, y[1].hi}}};
       }
     }
   }
