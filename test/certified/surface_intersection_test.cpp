@@ -2319,8 +2319,10 @@ TEST_CASE("Viviani: both branches through the tangent point are complete, the fi
   CHECK(L.arcs.size() == 4);
   for (const auto& arc : L.arcs) {
     // the chain of Krawczyk boxes along each half-branch of the node's box (a quarter of the domain wide) carries
-    // the statuses down to about 1e-6 of the node; the fibre is proved but for a few spans
-    CHECK(arc.fibre_undecided_fraction < 0.1);
+    // the statuses down to about 1e-6 of the node; the fibre is proved but for a few spans: next to the node, where
+    // the other branch crosses a span's box, beside that branch's proved regions (beside_half_branches.h): 1.4 % of
+    // one arc at this tolerance (4.7 % without them at the benchmark's 1e-4)
+    CHECK(arc.fibre_undecided_fraction < 0.02);
     CHECK(arc.undecided_fraction < 1e-4);
     for (const auto& s : arc.sheets)
       for (const auto& q : s.points) {
@@ -2342,6 +2344,9 @@ TEST_CASE("Viviani: both branches through the tangent point are complete, the fi
   CHECK(gap[0] < 5e-3);  // sphere (u, v)
   CHECK(gap[1] < 5e-3);  // 3D
   CHECK(gap[2] < 5e-3);  // cylinder (u, v)
+  // the same against the points whose genuine status is proved (among them the half-branches' refined points,
+  // which take their chain span's status)
+  check_sheets_complete(proved_genuine_sheets(L), samples, 5e-3);
 }
 
 // The torus R = 5, r = 3 (tube angle theta = 2 atan((2u - 1)/2), angle about the z axis phi = 2 atan(v)) and its
