@@ -11,6 +11,7 @@
 // Peers: bash benchmark/install-peers.sh (Debian libocct-*-dev; benchmark-only). The CMake build defines
 // BEZOUTIAN_WITH_OCCT and links OpenCASCADE for this file when its headers are found.
 // Run:   build/benchmark/structured_surfaces_benchmark [repetitions=5]
+//        build/benchmark/structured_surfaces_benchmark --time-limit S   (where a budget of S seconds ends each family)
 #include <bezoutian/intersection/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
 
@@ -435,7 +436,33 @@ std::string gap_text(double g) {
 
 }  // namespace
 
+// How closely the time limit holds: each family once with Intersection_limits::time_limit = `limit` seconds, the
+// wall time until it returns or throws Budget_exceeded, and the stage named.
+int time_limit_table(double limit) {
+  std::printf("| family | time_limit [s] | returned after [s] | overrun [s] | outcome |\n|---|---|---|---|---|\n");
+  for (const Family& f : families()) {
+    Surface_intersection_options o;
+    o.polyline_tolerance = 1e-4;
+    o.limits.time_limit = limit;
+    std::string outcome = "finished";
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      const Surface_locus L = f.self ? self_intersection_locus(f.phi, o) : intersection_locus(f.phi, f.psi, o);
+    } catch (const Budget_exceeded& e) {
+      const std::string what = e.what();
+      const auto in = what.find("exceeded in ");
+      outcome = "stopped in " + (in == std::string::npos ? what : what.substr(in + 12, what.find(':', in) - in - 12));
+    } catch (const std::exception& e) {
+      outcome = std::string("error: ") + e.what();
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("| %s | %.2f | %.3f | %.3f | %s |\n", f.name.c_str(), limit, s, std::max(0.0, s - limit), outcome.c_str());
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
+  if (argc > 2 && std::string(argv[1]) == "--time-limit") return time_limit_table(std::atof(argv[2]));
   const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   std::printf("| family | closed-form answer | ours: answered | certified | gap to the answer | time [ms] |"
 #ifdef BEZOUTIAN_WITH_OCCT
@@ -452,7 +479,7 @@ int main(int argc, char** argv) {
     const double gap = f.samples.empty() ? (r.geometry.empty() ? 0 : -1) : worst_gap(f.samples, r.geometry);
     char certified[128] = "yes";
     if (!r.certified)
-      std::snprintf(certified, sizeof certified, "no (undecided: status %.1f %%, fibre %.1f %%%s)",
+      std::snprintf(certified, sizeof certified, "no (undecided: status %.2g %%, fibre %.2g %%%s)",
                     100 * r.status_undecided, 100 * r.fibre_undecided,
                     r.pinch_incomplete ? "; pinch points not proved complete" : "");
     std::printf("| %s | %s | %s | %s | %s | %.2f |", f.name.c_str(), f.answer.c_str(), r.answered ? "yes" : "no",

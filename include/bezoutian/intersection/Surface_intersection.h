@@ -870,6 +870,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   const bool kernel_usable = L.equation.route == Implicit_equation::Route::determinant;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
+  if (time) budget.interrupt = [time]() { time->check("certified lifting"); };
   std::vector<double> length(L.arcs.size(), 0);                 // (the measure of undecided_fraction)
   std::vector<std::vector<bool>> split_of(L.arcs.size()), float_genuine_of(L.arcs.size());
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
@@ -925,6 +926,7 @@ void certify_lifting(Surface_locus& L, const Partner_equations& eq, const Surfac
   // tests per piece, over about fifty pieces from 1e-7 to a few ulps)
   Exclusion_budget beside;
   beside.left = beside.fallback_left = 4 * o.lifting_exclusion_budget;
+  beside.interrupt = budget.interrupt;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k)  // (the fibres of proved spans)
     for (const Curve_topology_piece& pc : L.topology.edges[k].pieces)
       if (pc.graph_axis < 0) prove_fibres_beside_half_branches(eq, o.partner_domain, pc, *chains, beside);
@@ -992,6 +994,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
   if (L.topology_method != "subdivision" || !o.complete_lifting) return;
   Exclusion_budget budget;
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
+  if (time) budget.interrupt = [time]() { time->check("complete lifting"); };
   std::unique_ptr<Double_curve_equation> D_double;
   std::size_t inserted = 0, full_fibres = 0;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
@@ -1093,7 +1096,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
                                o.max_refinement_points - inserted);
       }
       return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes,
-                                   chains, singular_boxes, &L.equation.square_free, exact_points);
+                                   chains, singular_boxes, &L.equation.square_free, exact_points, every_partner);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {

@@ -283,6 +283,7 @@ class Graph_piece_certifier {
       int left_chart = -1, right_chart = -1;  // the blown-up chart that proved the end span, if any
       D left_T{}, right_T{};
       while (!stack.empty()) {
+        budget.poll();
         const Span s = stack.back();
         stack.pop_back();
         std::array<D, 3> Ws = W, P;  // the box predicted from the tangent at the middle of the span, if any
@@ -618,6 +619,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
   bool first = true;
   double t_done = tc.mid();
   while (!todo.empty()) {
+    budget.poll();
     Span sp = todo.back();
     todo.pop_back();
     const std::size_t j = sp.j;
@@ -707,6 +709,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     // (the zero curve is the half-branch, which lies in its cell: its other coordinate is in the cell's range)
     const D cell_other = axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1);
     for (int step = 0; step < 1000 && (p_near - t_done) * dir > 0; ++step) {
+      budget.poll();
       const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
       // (the whole rest once it is a few ulps, or once half-way rounds to t_done; dir is the first span's step)
       const double end = (dir > 0 ? p_near - half : half - p_near) <= ulps || half == t_done ? p_near : half;

@@ -28,6 +28,7 @@
 #include <bezoutian/arithmetic/double_interval.h>
 #include <bezoutian/arithmetic/interval_krawczyk.h>
 #include <bezoutian/arithmetic/number_types.h>
+#include <bezoutian/lifting/internal/combined_equations_exclusion.h>
 
 #include <array>
 #include <cmath>
@@ -875,7 +876,7 @@ inline bool no_genuine_partner(const Partner_equations& eq, const Parameter_box&
         for (int i = 0; i < 4; ++i) v = v + J[r][i] * dz[i];
         excluded = !v.contains_zero();
       }
-      if (excluded) continue;
+      if (excluded || combination_excludes_zero(Ec, J, dz)) continue;
     }
     // near the trivial partner: the rank test on the hull of the piece and y = 0 (pieces touching it included)
     const D h0{std::min(y[0].lo, 0.0), std::max(y[0].hi, 0.0)}, h1{std::min(y[1].lo, 0.0), std::max(y[1].hi, 0.0)};

@@ -14,7 +14,8 @@
 //     every zero of E(t, .) in W_j lies in its image K_j;
 //  2. no point of T x V has a partner in the domain outside the union of the W_j (no_genuine_partner started from
 //     a cover of the complement of the W_j's interiors), V the intersection of the K_j's ranges of the other
-//     coordinate, which holds the arc points over T (each K_j does).
+//     coordinate, which holds the arc points over T (each K_j does); where that test fails (along a tangential
+//     contact, combined_equations_exclusion.h) the box's parts are tried one by one.
 // A partner y of an arc point (t, g(t)), t in T, in the domain lies in some W_j by 2; (g(t), y) is then in W_j (by
 // 1, g(t) is in K_j's range), so y is sheet j's partner by uniqueness: the sheets are every partner over T.
 // A span without any sheet is proved empty by the strip exclusion (certified_lifting.h: exclude_strips). Where two
@@ -215,12 +216,13 @@ inline std::vector<Partner_sheet> chain_sheets(const std::vector<std::vector<std
 
 /// The span proof of the header comment on T for the sheets `active` (with floating-point partners ya, yb at the
 /// span's ends, and the other coordinate oa, ob there): true if every sheet's zero curve is proved over T and
-/// every other partner in the domain is excluded; the sheets' partner enclosures over T go to `K`.
+/// every other partner in the domain is excluded; the sheets' partner enclosures over T go to `K`. `split_box`:
+/// when the exclusion on the whole box T x V fails, its parts are tried (no_partner_in_region).
 inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_box& domain, const Parameter_box& cell,
                                  int axis, const Double_interval& T, double oa, double ob,
                                  const std::vector<std::array<std::array<double, 2>, 2>>& ends,
                                  std::vector<std::array<Double_interval, 3>>& K, Exclusion_budget& budget,
-                                 const Polynomial_2<Integer>* curve = nullptr) {
+                                 const Polynomial_2<Integer>* curve = nullptr, bool split_box = false) {
   using D = Double_interval;
   const double len = T.hi - T.lo;
   const double room = 0.5 * std::fabs(ob - oa) + 0.25 * len + 1e-12;
@@ -269,7 +271,14 @@ inline bool prove_complete_fibre(const Partner_equations& eq, const Parameter_bo
                                       : Parameter_box{Rational(V.lo), Rational(V.hi), Rational(T.lo), Rational(T.hi)};
   const double big = 1e300;
   const std::vector<std::array<D, 2>> cover = complement_cover({D{-big, big}, D{-big, big}}, holes);
-  return no_genuine_partner(eq, box, domain, 1024, &cover);
+  if (no_genuine_partner(eq, box, domain, 1024, &cover)) return true;
+  if (!split_box) return false;
+  // along a tangential contact the gap that separates a point of T x V off the arc from having a partner shrinks
+  // with its distance from the arc, and the test needs parts of the box about that small (down to 1/64 of it)
+  std::size_t tests = 0;
+  const double side = std::max(T.hi - T.lo, V.hi - V.lo);
+  return no_partner_in_region(eq, domain, axis == 0 ? std::array<D, 2>{T, V} : std::array<D, 2>{V, T}, side / 64, tests,
+                              48, budget, holes, &Exclusion_budget::take_box_split);
 }
 
 /// The folds of the graph piece `pc` of the edge `e` (partner_fold_proofs.h): two sheets whose partners come
@@ -391,11 +400,6 @@ inline void mark_half_branch_points(const Curve_topology_edge& e, const Curve_to
   }
 }
 
-/// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
-/// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
-/// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
-/// split point, whose graph intervals are `split_boxes`, while a sheet crosses the domain's side over it). Sheet points
-/// outside the domain are kept (the caller reports the genuine runs).
 /// The share of a half-branch piece (by its coordinate t) whose fibre the chain proved (half_branch_chains.h):
 /// the spans with that proof whose traced points carry as many sheets in the domain as the span has partners
 /// (one, following a partner in the span's box, or none).
@@ -439,6 +443,13 @@ inline double half_branch_fibre_share(const Partner_equations& eq, const Paramet
   return std::min(1.0, proved / full);
 }
 
+/// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
+/// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
+/// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
+/// split point, whose graph intervals are `split_boxes`, while a sheet crosses the domain's side over it). Sheet points
+/// outside the domain are kept (the caller reports the genuine runs). `split_span_boxes`: a span still unproved
+/// after its last halving has its box's parts tried (prove_complete_fibre); worth it only when `fibres` hold every
+/// partner, not when a missing one is the likely reason for the failure.
 inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Parameter_box& domain, bool unbounded,
                                          const Curve_topology_edge& e,
                                          const std::vector<std::vector<std::array<double, 2>>>& fibres,
@@ -447,7 +458,8 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
                                          const Half_branch_chains* chains = nullptr,
                                          const std::vector<std::array<Double_interval, 2>>& singular_boxes = {},
                                          const Polynomial_2<Integer>* curve = nullptr,
-                                         const std::vector<Partner_boundary_point>& exact_points = {}) {
+                                         const std::vector<Partner_boundary_point>& exact_points = {},
+                                         bool split_span_boxes = false) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
@@ -521,6 +533,7 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       std::vector<Span> todo{{0, 1, 0}};
       bool ends_done[2] = {false, false};
       while (!todo.empty()) {
+        budget.poll();
         const Span sp = todo.back();
         todo.pop_back();
         auto at = [&](double f, double x0, double x1) { return x0 + f * (x1 - x0); };
@@ -536,8 +549,14 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           ends.push_back({std::array<double, 2>{at(sp.f0, ya[0], yb[0]), at(sp.f0, ya[1], yb[1])},
                           std::array<double, 2>{at(sp.f1, ya[0], yb[0]), at(sp.f1, ya[1], yb[1])}});
         }
+        // (the parts of the span's box are tried once, on the last halving, away from the points whose boxes end
+        // the halving: next to them a failure is expected)
+        bool near_point = false;
+        for (const auto* boxes : {&singular_boxes, &split_boxes})
+          for (const auto& g : *boxes) near_point = near_point || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
         std::vector<std::array<D, 3>> K;
-        if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget, curve)) {
+        if (prove_complete_fibre(eq, domain, pc.cell, axis, Ts, at(sp.f0, oa, ob), at(sp.f1, oa, ob), ends, K, budget, curve,
+                                 split_span_boxes && sp.depth == 3 && !near_point)) {
           // (the arc points over Ts lie in the cell: their other coordinate in K_j's range and the cell's)
           for (auto& k : K) k[0] = D{std::max(k[0].lo, cell_other.lo), std::min(k[0].hi, cell_other.hi)};
           // every partner in the domain is in some K_j: genuine if one K_j lies inside the domain, phantom if every

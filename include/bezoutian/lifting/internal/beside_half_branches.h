@@ -53,37 +53,6 @@ inline std::vector<Cell_region> subtract_region(const std::vector<Cell_region>& 
   return out;
 }
 
-/// Whether no point of the box has a partner in the domain (outside the partner box `hole`, if given):
-/// no_genuine_partner, the box halved along its longer side while the test fails, down to sides of `min_side`,
-/// within `max_tests` tests.
-inline bool no_partner_in_region(const Partner_equations& eq, const Parameter_box& domain, const Cell_region& box,
-                                 double min_side, std::size_t& tests, std::size_t max_tests, Exclusion_budget& budget,
-                                 const std::array<Double_interval, 2>* hole = nullptr) {
-  using D = Double_interval;
-  std::vector<Cell_region> todo{box};
-  while (!todo.empty()) {
-    const Cell_region b = todo.back();
-    todo.pop_back();
-    if (tests >= max_tests || !budget.take_fallback()) return false;
-    ++tests;
-    const Parameter_box pb{Rational(b[0].lo), Rational(b[0].hi), Rational(b[1].lo), Rational(b[1].hi)};
-    if (!hole && no_genuine_partner(eq, pb, domain, 256, nullptr)) continue;
-    if (hole) {
-      const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, pb, domain), {*hole});
-      if (no_genuine_partner(eq, pb, domain, 1024, &cover)) continue;
-    }
-    const int c = b[0].hi - b[0].lo >= b[1].hi - b[1].lo ? 0 : 1;
-    if (!(b[c].hi - b[c].lo > min_side)) return false;
-    const double m = b[c].mid();
-    Cell_region lo = b, hi = b;
-    lo[c] = D{b[c].lo, m};
-    hi[c] = D{m, b[c].hi};
-    todo.push_back(hi);
-    todo.push_back(lo);
-  }
-  return true;
-}
-
 /// The regions of the other chains of pc's cell (see the header comment), in (u, v).
 inline std::vector<Cell_region> regions_beside(const Half_branch_chains& chains, const Curve_topology_piece& pc) {
   std::vector<Cell_region> regions;
@@ -116,7 +85,7 @@ inline void prove_fibres_beside_half_branches(const Partner_equations& eq, const
     std::size_t tests = 0;
     bool proved = true;
     for (const Cell_region& b : rest)
-      if (!(proved = no_partner_in_region(eq, domain, b, min_side, tests, 64, budget, &f.hole))) break;
+      if (!(proved = no_partner_in_region(eq, domain, b, min_side, tests, 64, budget, {f.hole}))) break;
     if (proved)
       chain->spans.push_back({f.T, f.hole, f.partners, {std::numeric_limits<double>::quiet_NaN(),
                                                         std::numeric_limits<double>::quiet_NaN()}, f.partner});
@@ -191,6 +160,7 @@ inline double prove_beside_half_branches(const Partner_equations& eq, const Para
   if (t_done != t_at(m - 2) || float_genuine[idx[m - 2]]) return finish();
   int shrink = 0;
   for (int step = 0; step < 200 && (p_near - t_done) * dir > 0; ++step) {
+    budget.poll();
     const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
     // (the whole rest once it is a few ulps, or once half-way rounds to t_done)
     const double end = (p_near - half) * dir <= ulps || half == t_done ? p_near : half;

@@ -42,6 +42,14 @@ enum class Partner_status { genuine, phantom, undecided, outside };
 struct Exclusion_budget {
   std::size_t left = std::numeric_limits<std::size_t>::max();
   std::size_t fallback_left = std::numeric_limits<std::size_t>::max();
+  /// Called at every test taken (of any count) and at every poll(): the caller's wall-clock check (a clock read,
+  /// tens of nanoseconds against the microseconds of a test), which ends the computation by throwing when its time
+  /// is up. So the time limit holds within an arc, not only between arcs.
+  std::function<void()> interrupt;
+  /// For the loops of Krawczyk tests and exact proofs that take no exclusion test.
+  void poll() {
+    if (interrupt) interrupt();
+  }
   bool take() { return take(left); }
   bool take_fallback() { return take(fallback_left); }
   /// Krawczyk tests of the blown-up equations near the trivial partner (blown_up_partner_equations.h); given up
@@ -49,6 +57,9 @@ struct Exclusion_budget {
   std::size_t blown_up_left = 8000, blown_up_tried = 0, blown_up_proved = 0;
   /// exclusion tests on the slabs of single points (the last resort of certify_edge_partners), per locus
   std::size_t point_left = 4000;
+  /// exclusion tests on the parts of a span's box halved for the complete fibre (partner_sheets.h), per locus
+  std::size_t box_split_left = 2000;
+  bool take_box_split() { return take(box_split_left); }
   bool take_blown_up() {
     if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
     if (!take(blown_up_left)) return false;
@@ -57,9 +68,10 @@ struct Exclusion_budget {
   }
 
  private:
-  static bool take(std::size_t& n) {
+  bool take(std::size_t& n) {
     if (n == 0) return false;
     --n;
+    poll();
     return true;
   }
 };
@@ -193,12 +205,16 @@ inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T
       if (!(step < 1)) return false;
       continue;
     }
-    if (!(step <= 1e-10 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2])))) return false;
+    // Newton's last step bounds its error; near a singular point of D = 0 (the Jacobian's condition about the
+    // inverse distance to it) it stalls at rounding times that condition, which the box's radius may still dwarf
     const double h = 0.5 * (T.hi - T.lo);
+    double r[3], r_min = HUGE_VAL;
     for (int c = 0; c < 3; ++c) {
-      const double r = 2 * std::fabs(x[c]) * h + 4 * h * h + 1e-13 * (1 + std::fabs(w[c]));
-      W[c] = D{w[c] - r, w[c] + r};
+      r[c] = 2 * std::fabs(x[c]) * h + 4 * h * h + 1e-13 * (1 + std::fabs(w[c]));
+      r_min = std::min(r_min, r[c]);
     }
+    if (!(step <= 1e-10 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2])) || step <= 0.25 * r_min)) return false;
+    for (int c = 0; c < 3; ++c) W[c] = D{w[c] - r[c] - step, w[c] + r[c] + step};
   }
   return true;
 }
@@ -244,8 +260,7 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
 /// unique: W widened 2, 4, 8, ... (up to 4096) times about its centre while Krawczyk's strict test passes, the last
 /// that passed (W if none). As the hole of an exclusion of every other partner it leaves a margin: at the edge of a
 /// tight W the equations may come within rounding of zero over the box of arc points, and no subdivision of the
-/// partner range then excludes the edge (the 1.4e-3 circle of a plane 1e-6 below a sphere: a second partner, complex
-/// with a small imaginary part, lies close by).
+/// partner range then excludes the edge.
 template <class Eq>
 inline std::array<Double_interval, 3> widened_unique_box(const Eq& eq, int axis, const Double_interval& T,
                                                          const std::array<Double_interval, 3>& W) {
@@ -613,6 +628,42 @@ inline std::vector<std::array<Double_interval, 2>> complement_cover(const std::a
     cover = std::move(next);
   }
   return cover;
+}
+
+/// Whether no point of the box (its u range and its v range) has a partner in the domain outside the partner boxes
+/// `holes`: no_genuine_partner, the box halved along its longer side while the test fails, down to sides of
+/// `min_side`, within `max_tests` tests (counted in `tests`) and the budget's count `take`. Each part needs its
+/// own proof; together they cover the box. Halving helps where the gap that separates a point of the box from
+/// having a partner is small against the box: next to a node (the other branch's partners) and along a
+/// tangential contact (combined_equations_exclusion.h), where it shrinks with the point's distance from the arc.
+inline bool no_partner_in_region(const Partner_equations& eq, const Parameter_box& domain,
+                                 const std::array<Double_interval, 2>& box, double min_side, std::size_t& tests,
+                                 std::size_t max_tests, Exclusion_budget& budget,
+                                 const std::vector<std::array<Double_interval, 2>>& holes = {},
+                                 bool (Exclusion_budget::*take)() = &Exclusion_budget::take_fallback) {
+  using D = Double_interval;
+  std::vector<std::array<D, 2>> todo{box};
+  while (!todo.empty()) {
+    const std::array<D, 2> b = todo.back();
+    todo.pop_back();
+    if (tests >= max_tests || !(budget.*take)()) return false;
+    ++tests;
+    const Parameter_box pb{Rational(b[0].lo), Rational(b[0].hi), Rational(b[1].lo), Rational(b[1].hi)};
+    if (holes.empty() && no_genuine_partner(eq, pb, domain, 256, nullptr)) continue;
+    if (!holes.empty()) {
+      const std::vector<std::array<D, 2>> cover = complement_cover(partner_range(eq, pb, domain), holes);
+      if (no_genuine_partner(eq, pb, domain, 1024, &cover)) continue;
+    }
+    const int c = b[0].hi - b[0].lo >= b[1].hi - b[1].lo ? 0 : 1;
+    if (!(b[c].hi - b[c].lo > min_side)) return false;
+    const double m = b[c].mid();
+    std::array<D, 2> lo = b, hi = b;
+    lo[c] = D{b[c].lo, m};
+    hi[c] = D{m, b[c].hi};
+    todo.push_back(hi);
+    todo.push_back(lo);
+  }
+  return true;
 }
 
 }  // namespace internal
