@@ -2,6 +2,7 @@
 // lifted to the partner parameters, as text, JSON, SVG and OBJ.
 #include "commands.h"
 #include "load.h"
+#include "locus_json.h"
 
 #include <bezoutian/intersection/Surface_intersection.h>
 #include <bezoutian/topology/Cgal_curve_analysis.h>
@@ -688,6 +689,8 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
 }
 
 } // namespace
+
+nlohmann::json locus_json(const bezoutian::Surface_locus& L, double seconds) { return to_json(L, seconds); }
 
 std::shared_ptr<std::string> patch_intersect_domain() {
   static auto d = std::make_shared<std::string>();

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -183,6 +184,43 @@ struct Surface_locus {
   bool pinch_points_complete = false;
   std::string pinch_points_note;
 };
+
+/// \brief Whether everything the locus reports is proved and complete: its topology computed; on every arc with
+/// genuine or undecided points, every status and every fibre proved (Locus_arc::undecided_fraction and
+/// fibre_undecided_fraction zero); every edge line's status and every isolated point's lifting proved; for a
+/// self-intersection with a double curve, its pinch points complete. If not, `reason` (optional) gets the first
+/// thing that is not.
+inline bool locus_certified(const Surface_locus& L, std::string* reason = nullptr) {
+  auto no = [&](const std::string& why) {
+    if (reason) *reason = why;
+    return false;
+  };
+  auto percent = [](double f) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2g %%", 100 * f);
+    return std::string(b);
+  };
+  if (!L.topology_computed) return no("topology not computed: " + L.note);
+  for (std::size_t k = 0; k < L.arcs.size(); ++k) {
+    const Locus_arc& a = L.arcs[k];
+    bool genuine = false;
+    for (const Locus_point& q : a.points) genuine = genuine || q.genuine;
+    if (!genuine && a.undecided_fraction == 0) continue;
+    if (a.undecided_fraction > 0)
+      return no("arc " + std::to_string(k) + ": the status of " + percent(a.undecided_fraction) + " of it is not proved");
+    if (a.fibre_undecided_fraction > 0)
+      return no("arc " + std::to_string(k) + ": the fibre of " + percent(a.fibre_undecided_fraction) +
+                " of it is not proved complete");
+  }
+  for (std::size_t k = 0; k < L.edge_lines.size(); ++k)
+    if (!L.edge_lines[k].status_proved) return no("edge line " + std::to_string(k) + ": status not proved");
+  for (std::size_t k = 0; k < L.isolated_points.size(); ++k)
+    if (!L.isolated_points[k].lift.proved) return no("isolated point " + std::to_string(k) + ": not decided");
+  if (L.self_intersection && !L.arcs.empty() && !L.pinch_points_complete)
+    return no("pinch points not proved complete: " + L.pinch_points_note);
+  if (reason) reason->clear();
+  return true;
+}
 
 }  // namespace bezoutian
 
