@@ -65,6 +65,9 @@ std::string problem_name(const bezoutian::Model_problem& p) {
 
 void run_model(const Model_options& o) {
   Loaded_file f = load_and_validate(o.file);
+  if (f.doc.patches.empty())
+    throw bezoutian::Invalid_input(o.file + ": expected patches (a model), found none (" +
+                                   std::to_string(f.doc.curves_2.size() + f.doc.curves_3.size()) + " curve(s))");
   for (const auto& w : f.warnings) std::cerr << "warning: " << w << "\n";
   bezoutian::Model_intersection_options mo;
   mo.threads = o.threads;
