@@ -584,10 +584,13 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
           }
           if (!genuine && !outside) {
             // a sheet crosses the domain's side over Ts, or its enclosure reaches over it: halved up to six times,
-            // and at a certified split point until the open part lies inside the split's box (the split point's own)
+            // and at a certified split point until the open part lies inside the split's box (the split point's own),
+            // widened by 8 ulps: the halving's last pieces round to a few ulps beside the box, as the descent's pieces
+            // do beside a singular point's box (certified_lifting.h), and are not counted either
             bool inside_split = false, meets_split = false;
             for (const auto& g : split_boxes) {
-              inside_split = inside_split || (g[axis].lo <= Ts.lo && Ts.hi <= g[axis].hi);
+              const double ulps = 8 * std::numeric_limits<double>::epsilon() * (std::fabs(g[axis].lo) + std::fabs(g[axis].hi));
+              inside_split = inside_split || (g[axis].lo - ulps <= Ts.lo && Ts.hi <= g[axis].hi + ulps);
               meets_split = meets_split || (Ts.lo <= g[axis].hi && g[axis].lo <= Ts.hi);
             }
             const double m = 0.5 * (sp.f0 + sp.f1);
