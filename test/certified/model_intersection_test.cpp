@@ -21,17 +21,20 @@ using namespace bezoutian;
 namespace {
 
 // The pairs of patches that share a boundary curve, read from the data's topology file ("  0(rim).col3 (v=1) ==
-// 1(rim).col0 (v=0)").
-std::set<std::pair<std::size_t, std::size_t>> shared_boundary_pairs() {
+// 1(rim).col0 (v=0)", "  8(body).row3 (u=1) == reversed 31(bottom).row3 (u=1)"); `curves` counts its lines.
+std::set<std::pair<std::size_t, std::size_t>> shared_boundary_pairs(std::size_t* curves = nullptr) {
   std::ifstream in(bezoutian_test::shared_data("teapot/teapot32_topology.txt"));
-  const std::regex line(R"(^\s*(\d+)\(\w+\)\.\w+ \([^)]*\) == +(\d+)\(\w+\)\.\w+ \([^)]*\))");
+  const std::regex line(R"(^\s*(\d+)\(\w+\)\.\w+ \([^)]*\) == +(reversed +)?(\d+)\(\w+\)\.\w+ \([^)]*\))");
   std::set<std::pair<std::size_t, std::size_t>> out;
+  std::size_t count = 0;
   for (std::string s; std::getline(in, s);) {
     std::smatch m;
     if (!std::regex_search(s, m, line)) continue;
-    const std::size_t a = std::stoul(m[1]), b = std::stoul(m[2]);
+    ++count;
+    const std::size_t a = std::stoul(m[1]), b = std::stoul(m[3]);
     out.insert({std::min(a, b), std::max(a, b)});
   }
+  if (curves) *curves = count;
   return out;
 }
 
@@ -46,9 +49,11 @@ TEST_CASE("model: the broad phase keeps every pair of the teapot that shares a b
   REQUIRE(patches.size() == 32);
   const auto pairs = internal::pairs_with_meeting_boxes(patches);
   const std::set<std::pair<std::size_t, std::size_t>> kept(pairs.begin(), pairs.end());
-  const auto shared = shared_boundary_pairs();
-  // the topology file lists 52 shared boundary curves (some pairs share two: the handle's and spout's halves)
-  CHECK(shared.size() >= 40);
+  std::size_t curves = 0;
+  const auto shared = shared_boundary_pairs(&curves);
+  // the data's README: 52 shared boundary curves; the handle's and spout's two pairs of halves share two each
+  CHECK(curves == 52);
+  CHECK(shared.size() == 48);
   for (const auto& p : shared) {
     INFO("patches " << p.first << ", " << p.second);
     CHECK(kept.count(p) == 1);
