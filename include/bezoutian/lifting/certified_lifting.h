@@ -23,6 +23,7 @@
 #include <bezoutian/topology/Curve_topology.h>
 #include <bezoutian/lifting/internal/beside_half_branches.h>
 #include <bezoutian/lifting/internal/blown_up_partner_equations.h>
+#include <bezoutian/lifting/internal/centred_partner_equations.h>
 #include <bezoutian/lifting/internal/exact_point_spans.h>
 #include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/double_partner_witness.h>
@@ -708,21 +709,117 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
     };
     // (the zero curve is the half-branch, which lies in its cell: its other coordinate is in the cell's range)
     const D cell_other = axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1);
+    // Next to p the surfaces may be tangent (the partner equations' Jacobian singular at p, as at Viviani's
+    // node): the equations as written cancel to rounding level there, and boxes of absolute coordinates cannot be
+    // narrower than a few ulps. A piece that fails nearer p than 1e-4 of the half-branch's length is tried again
+    // on the equations expanded exactly about p and the partner of the last proved piece, in coordinates relative
+    // to that centre (centred_partner_equations.h); the centre's partner is renewed when that fails too.
+    std::optional<Centred_partner_equations> centred;
+    std::array<D, 3> W_prev_rel;  // the box of the last proved piece relative to the centre, inside W_prev
+    auto centre_w = [&] {
+      const auto& z = centred->centre();
+      return std::array<double, 3>{z[std::size_t(1 - axis)], z[2], z[3]};
+    };
+    auto rebase = [&] {  // W_prev relative to the centre
+      const std::array<double, 3> c = centre_w();
+      for (int k = 0; k < 3; ++k) {  // rounded inwards: a box inside the one where the zero curve is unique
+        W_prev_rel[k] = D{D::next(W_prev[k].lo - c[k], true), D::next(W_prev[k].hi - c[k], false)};
+        if (!(W_prev_rel[k].lo <= W_prev_rel[k].hi)) W_prev_rel[k] = D{W_prev[k].mid() - c[k], W_prev[k].mid() - c[k]};
+      }
+    };
+    auto recentre = [&] {
+      std::array<double, 4> zc;
+      zc[std::size_t(axis)] = 0.5 * (p_box[2 * axis] + p_box[2 * axis + 1]);
+      zc[std::size_t(1 - axis)] = 0.5 * (p_box[2 * (1 - axis)] + p_box[2 * (1 - axis) + 1]);
+      zc[2] = W_prev[1].mid();
+      zc[3] = W_prev[2].mid();
+      centred.emplace(eq, zc);
+      rebase();
+    };
+    auto to_absolute = [&](const std::array<D, 3>& A) {  // (outward)
+      const std::array<double, 3> c = centre_w();
+      std::array<D, 3> r;
+      for (int k = 0; k < 3; ++k) r[k] = A[k] + D{c[k], c[k]};
+      return r;
+    };
+    const double t_centre = 0.5 * (p_box[2 * axis] + p_box[2 * axis + 1]);
+    // (farther from p the equations as written lose nothing that halving the pieces does not recover)
+    const double centred_below = 1e-4 * std::fabs(full);
+    // the fibre of a piece proved on the centred equations: every partner outside the widened box of its zero
+    // curve excluded on the same equations (the other partners come within about d^2 of solving them)
+    auto record_fibre_centred = [&](const D& T, const D& T_rel, const std::array<D, 3>& W_rel,
+                                    const std::array<D, 3>& K_rel, Partner_status st) {
+      const std::array<D, 3> K = to_absolute(K_rel);
+      if (!record) return;
+      if (st == Partner_status::phantom) {
+        record->spans.push_back({T, {to_absolute(W_rel)[1], to_absolute(W_rel)[2]}, 0, K[0]});
+        return;
+      }
+      const D X1 = axis == 0 ? T : K[0], X2 = axis == 0 ? K[0] : T;
+      const D X1_rel = axis == 0 ? T_rel : K_rel[0], X2_rel = axis == 0 ? K_rel[0] : T_rel;
+      const Parameter_box box{Rational(X1.lo), Rational(X1.hi), Rational(X2.lo), Rational(X2.hi)};
+      const std::array<D, 3> hole_rel = widened_unique_box(*centred, axis, T_rel, W_rel), hole = to_absolute(hole_rel);
+      // the partner range outside a box N about the centre's partner by the equations as written (there the
+      // equations are far from zero); N minus the hole by the centred ones. N: 64 times the hole, at least 1e-6.
+      const double yc1 = centred->centre()[2], yc2 = centred->centre()[3];
+      const double rho = std::max(1e-6, 64 * std::max({std::fabs(hole_rel[1].lo), std::fabs(hole_rel[1].hi),
+                                                       std::fabs(hole_rel[2].lo), std::fabs(hole_rel[2].hi)}));
+      const std::array<D, 2> range = partner_range(eq, box, domain);
+      const std::array<D, 2> near_abs{D{yc1 - rho, yc1 + rho}, D{yc2 - rho, yc2 + rho}};
+      const std::vector<std::array<D, 2>> far = complement_cover(range, {near_abs});
+      std::vector<std::array<D, 2>> near;
+      for (const auto& piece : complement_cover({D{-rho, rho}, D{-rho, rho}}, {{hole_rel[1], hole_rel[2]}})) {
+        const std::array<D, 2> clipped{D{std::max(piece[0].lo, range[0].lo - yc1), std::min(piece[0].hi, range[0].hi - yc1)},
+                                       D{std::max(piece[1].lo, range[1].lo - yc2), std::min(piece[1].hi, range[1].hi - yc2)}};
+        // (the clip's ends rounded to nearest: widened by an ulp, a superset of range minus the centre)
+        if (clipped[0].lo <= clipped[0].hi && clipped[1].lo <= clipped[1].hi)
+          near.push_back({D::widen(clipped[0].lo, clipped[0].hi), D::widen(clipped[1].lo, clipped[1].hi)});
+      }
+      if (chains->take_exclusion() && (far.empty() || no_genuine_partner(eq, box, domain, 1024, &far)) &&
+          no_partner_near_centre(*centred, X1_rel, X2_rel, near))
+        record->spans.push_back({T, {hole[1], hole[2]}, st == Partner_status::genuine ? 1 : 0, K[0], {K[1], K[2]}});
+      else
+        record->open_fibres.push_back({T, K[0], {hole[1], hole[2]}, {K[1], K[2]}, st == Partner_status::genuine ? 1 : 0});
+    };
     for (int step = 0; step < 1000 && (p_near - t_done) * dir > 0; ++step) {
       budget.poll();
       const double half = t_done + std::ldexp(p_near - t_done, -1 - shrink);
-      // (the whole rest once it is a few ulps, or once half-way rounds to t_done; dir is the first span's step)
-      const double end = (dir > 0 ? p_near - half : half - p_near) <= ulps || half == t_done ? p_near : half;
+      // (the whole rest once it is a few ulps, or once half-way rounds to t_done; dir is the first span's step;
+      // on the centred equations a piece's share of the distance to p matters, not its absolute width, so only the
+      // second)
+      const double end =
+          ((dir > 0 ? p_near - half : half - p_near) <= ulps && !centred) || half == t_done ? p_near : half;
       const D T = dir > 0 ? D{t_done, end} : D{end, t_done};
-      std::array<D, 3> W, K;
-      bool ok = predict_partner_box(eq, axis, T, {W_prev[0].mid(), W_prev[1].mid(), W_prev[2].mid()}, W) &&
-                prove_zero_curve(eq, axis, T, W, K, shrink >= 10);
-      std::array<D, 3> both;
-      for (int c = 0; c < 3 && ok; ++c) {  // the zero curves of consecutive pieces agree at their common end
-        both[c] = D{std::max(W_prev[c].lo, W[c].lo), std::min(W_prev[c].hi, W[c].hi)};
-        ok = both[c].lo <= both[c].hi;
+      std::array<D, 3> W, K, W_rel, K_rel;
+      const D T_rel = T - D{t_centre, t_centre}, t_done_rel = D{t_done, t_done} - D{t_centre, t_centre};
+      // the tests of a piece: its zero curve proved unique in a box, and equal at t_done to the previous one's
+      auto piece_proved = [&](const auto& equations, const D& T_, std::array<D, 3>& W_, std::array<D, 3>& K_,
+                              const std::array<D, 3>& W_before, const D& t_join, double slack, double floor) {
+        bool ok = predict_partner_box(equations, axis, T_, {W_before[0].mid(), W_before[1].mid(), W_before[2].mid()},
+                                      W_, slack) &&
+                  prove_zero_curve(equations, axis, T_, W_, K_, shrink >= 10, floor);
+        std::array<D, 3> both;
+        for (int c = 0; c < 3 && ok; ++c) {
+          both[c] = D{std::max(W_before[c].lo, W_[c].lo), std::min(W_before[c].hi, W_[c].hi)};
+          ok = both[c].lo <= both[c].hi;
+        }
+        return ok && parametric_partner_krawczyk(equations, axis, t_join, both);
+      };
+      bool ok = piece_proved(eq, T, W, K, W_prev, D{t_done, t_done}, 1e-13, 1e-15), on_centred = false;
+      if (!ok && std::fabs(p_near - t_done) < centred_below) {
+        const bool renew = centred.has_value();
+        if (!centred) recentre();
+        ok = piece_proved(*centred, T_rel, W_rel, K_rel, W_prev_rel, t_done_rel, 0, 0);
+        if (!ok && renew) {  // a centre whose partner is the last proved piece's
+          recentre();
+          ok = piece_proved(*centred, T_rel, W_rel, K_rel, W_prev_rel, t_done_rel, 0, 0);
+        }
+        if (ok) {
+          W = to_absolute(W_rel);
+          K = to_absolute(K_rel);
+          on_centred = true;
+        }
       }
-      ok = ok && parametric_partner_krawczyk(eq, axis, D{t_done, t_done}, both);
       Partner_status st = ok ? status_from_partner(eq, domain, unbounded, axis, T, K, nullptr)
                              : Partner_status::undecided;
       if (st == Partner_status::undecided && ok && exact_end()) {
@@ -736,8 +833,14 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
         if (++shrink > 10) break;
         continue;
       }
-      record_fibre(T, W, K, st);
+      if (on_centred) {
+        record_fibre_centred(T, T_rel, W_rel, K_rel, st);
+        W_prev_rel = W_rel;
+      } else {
+        record_fibre(T, W, K, st);
+      }
       W_prev = W;
+      if (centred && !on_centred) rebase();
       t_done = end;
     }
     covered = (p_near - t_done) * dir > 0 ? std::fabs(t_done - tc.mid()) : full;

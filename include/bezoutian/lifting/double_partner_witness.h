@@ -143,6 +143,11 @@ class Partner_equations {
   /// Bounds on the degree of E in y1 and in y2 (self-intersection: y1 = l moves Q along u, y2 = k moves P along
   /// v; intersection: y1 = v on phi, y2 = s on psi).
   std::array<int, 2> degree_bounds() const { return degree_bounds_; }
+  /// The exact power-form coefficients of form k (0: the weight, 1-3: the coordinates) of the first patch
+  /// (which = 0) or of the second (which = 1; the same patch for a self-intersection): [j][i] multiplies u^i v^j.
+  const std::vector<std::vector<Rational>>& form(int which, int k) const {
+    return which == 0 ? A_[std::size_t(k)].f : B_[std::size_t(k)].f;
+  }
   /// The weights A_0(P), B_0(Q) at z (double).
   std::array<std::complex<double>, 2> weights(const std::array<std::complex<double>, 4>& z) const {
     std::array<std::complex<double>, 2> P, Q;

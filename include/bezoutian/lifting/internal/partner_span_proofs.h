@@ -176,11 +176,12 @@ inline bool parametric_partner_krawczyk(const Eq& eq, int axis, const Double_int
 
 
 /// A box W = V x Y predicted to hold the zeros (v, y) of E(t, .) for t in T (floating point: Newton at the centre
-/// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled).
-/// False if Newton does not converge.
+/// of T from `guess`, then the tangent dw/dt = -(dE/dw)^-1 dE/dt times the half width of T, doubled, plus
+/// `slack` (1 + |w|): Newton's accuracy on the equations as written; the centred equations, accurate relative to
+/// the distance to their centre, take a few ulps). False if Newton does not converge.
 template <class Eq>
 inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T,
-                                std::array<double, 3> w, std::array<Double_interval, 3>& W) {
+                                std::array<double, 3> w, std::array<Double_interval, 3>& W, double slack = 1e-13) {
   using D = Double_interval;
   const int q[3] = {1 - axis, 2, 3};
   const double t = T.mid();
@@ -210,7 +211,7 @@ inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T
     const double h = 0.5 * (T.hi - T.lo);
     double r[3], r_min = HUGE_VAL;
     for (int c = 0; c < 3; ++c) {
-      r[c] = 2 * std::fabs(x[c]) * h + 4 * h * h + 1e-13 * (1 + std::fabs(w[c]));
+      r[c] = 2 * std::fabs(x[c]) * h + 4 * h * h + slack * (1 + std::fabs(w[c]));
       r_min = std::min(r_min, r[c]);
     }
     if (!(step <= 1e-10 * (1 + std::fabs(w[0]) + std::fabs(w[1]) + std::fabs(w[2])) || step <= 0.25 * r_min)) return false;
@@ -223,10 +224,11 @@ inline bool predict_partner_box(const Eq& eq, int axis, const Double_interval& T
 /// box that passed, in which the zero curve gamma(t), t in T, is unique); K receives the operator's image, which
 /// encloses gamma(T). The box found by inflating the image alone can be much tighter than the one found from the
 /// hull (a narrower hole for an exclusion around it): image_inflation = false leaves that step to the caller.
+/// Each inflation adds a tenth of the width plus `inflation_floor` (coordinates relative to a centre take 0).
 template <class Eq>
 inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
                              std::array<Double_interval, 3>& W, std::array<Double_interval, 3>& K,
-                             bool image_inflation = true) {
+                             bool image_inflation = true, double inflation_floor = 1e-15) {
   using D = Double_interval;
   const std::array<D, 3> start = W;
   // epsilon-inflation, first on the hull of W and the operator's image, then (from the prediction again, unless
@@ -248,7 +250,7 @@ inline bool prove_zero_curve(const Eq& eq, int axis, const Double_interval& T,
       for (int c = 0; c < 3; ++c) {
         const double lo = mode == 0 ? std::min(W[c].lo, image[c].lo) : image[c].lo;
         const double hi = mode == 0 ? std::max(W[c].hi, image[c].hi) : image[c].hi;
-        const double r = 0.1 * (hi - lo) + 1e-15;
+        const double r = 0.1 * (hi - lo) + inflation_floor;
         W[c] = D{lo - r, hi + r};
       }
     }
