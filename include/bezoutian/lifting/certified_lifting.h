@@ -733,13 +733,36 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       zc[std::size_t(1 - axis)] = 0.5 * (p_box[2 * (1 - axis)] + p_box[2 * (1 - axis) + 1]);
       zc[2] = W_prev[1].mid();
       zc[3] = W_prev[2].mid();
+      if (!centred) {
+        centred.emplace(eq, zc);
+        rebase();
+        return;
+      }
+      // W_prev_rel moved to the new centre in relative coordinates (the centres differ by a few ulps or less at
+      // the end of the descent, where W_prev's absolute box is only a few ulps wide: rounding it inwards again
+      // would empty it)
+      const std::array<double, 3> old_c = centre_w();
       centred.emplace(eq, zc);
-      rebase();
+      const std::array<double, 3> c = centre_w();
+      for (int k = 0; k < 3; ++k) {  // (inwards: the shift's enclosure taken at its far end on each side)
+        const D shift = D{old_c[k], old_c[k]} - D{c[k], c[k]};
+        const D moved{D::next(W_prev_rel[k].lo + shift.hi, true), D::next(W_prev_rel[k].hi + shift.lo, false)};
+        W_prev_rel[k] = moved.lo <= moved.hi ? moved : D{W_prev_rel[k].mid() + shift.mid(), W_prev_rel[k].mid() + shift.mid()};
+      }
     };
-    auto to_absolute = [&](const std::array<D, 3>& A) {  // (outward)
+    auto to_absolute = [&](const std::array<D, 3>& A) {  // (outward: for enclosures)
       const std::array<double, 3> c = centre_w();
       std::array<D, 3> r;
       for (int k = 0; k < 3; ++k) r[k] = A[k] + D{c[k], c[k]};
+      return r;
+    };
+    auto to_absolute_inside = [&](const std::array<D, 3>& A) {  // (inward: for boxes of uniqueness)
+      const std::array<double, 3> c = centre_w();
+      std::array<D, 3> r;
+      for (int k = 0; k < 3; ++k) {
+        r[k] = D{D::next(A[k].lo + c[k], true), D::next(A[k].hi + c[k], false)};
+        if (!(r[k].lo <= r[k].hi)) r[k] = D{A[k].mid() + c[k], A[k].mid() + c[k]};
+      }
       return r;
     };
     const double t_centre = 0.5 * (p_box[2 * axis] + p_box[2 * axis + 1]);
@@ -815,7 +838,7 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
           ok = piece_proved(*centred, T_rel, W_rel, K_rel, W_prev_rel, t_done_rel, 0, 0);
         }
         if (ok) {
-          W = to_absolute(W_rel);
+          W = to_absolute_inside(W_rel);
           K = to_absolute(K_rel);
           on_centred = true;
         }

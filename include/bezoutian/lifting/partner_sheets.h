@@ -488,6 +488,13 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       return D{e.polyline[i][c], e.polyline[i][c]};
     };
     const D cell_other = axis == 0 ? D::hull(pc.cell.v0, pc.cell.v1) : D::hull(pc.cell.u0, pc.cell.u1);
+    // the cell touches the cell of a half-branch of this edge (a singular point's box): see the halvings below
+    bool beside_singular_cell = false;
+    for (const Curve_topology_piece& other_piece : e.pieces)
+      beside_singular_cell = beside_singular_cell ||
+                             (other_piece.graph_axis < 0 && other_piece.cell.u0 <= pc.cell.u1 && pc.cell.u0 <= other_piece.cell.u1 &&
+                              other_piece.cell.v0 <= pc.cell.v1 && pc.cell.v0 <= other_piece.cell.v1);
+    const int halvings = split_span_boxes && beside_singular_cell ? 5 : 3;
     for (std::size_t i = pc.first; i < pc.last; ++i) {
       const D a = coord(i, axis), b = coord(i + 1, axis);
       const D T{std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
@@ -644,11 +651,11 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         const double m = 0.5 * (sp.f0 + sp.f1);
         // (at most 256 halvings beyond the third per edge: next to a point where the arc comes within rounding of
         // the cell's side, as at a tangency with it, the anchor of every half fails from some depth on; in the pass
-        // with every partner, five halvings: beside a node's box the other branch passes through a span's box with
-        // its partners outside the span's hole, and shorter spans have boxes it misses. Viviani's arcs traced at
-        // the default tolerance 1e-3: fibre open on 1.4 % of an arc with three, 0 with five)
-        const bool deeper =
-            sp.depth < (split_span_boxes ? 5 : 3) || (meets_point && sp.depth < 64 && deep_halvings_left > 0);
+        // with every partner and in a cell beside a singular point's box, five halvings: there the other branch
+        // passes through a span's box with its partners outside the span's hole, and shorter spans have boxes it
+        // misses. Viviani's arcs traced at the default tolerance 1e-3: fibre open on 1.4 % of an arc with three,
+        // 0 with five)
+        const bool deeper = sp.depth < halvings || (meets_point && sp.depth < 64 && deep_halvings_left > 0);
         if (deeper && sp.f0 < m && m < sp.f1) {
           if (sp.depth >= 3) --deep_halvings_left;
           todo.push_back({m, sp.f1, sp.depth + 1});
