@@ -339,7 +339,14 @@ inline int Subdivision_topology::quadrant_half_branches(const std::vector<const 
     for (int i = 0; i < std::abs(e * weight); ++i) r = e > 0 ? r * 2 : r / 2;
     return r;
   };
-  int e = int(std::ceil(std::max(std::log2(CGAL::to_double(ru)) / wx, std::log2(CGAL::to_double(rv)) / wy)));
+  // the first guess from the bit lengths (log2 r within 1; not log2 of a double, which is -inf for radii below
+  // 2^-1074 and whose conversion to int would be undefined), lowered by 2 so that the loop finds the first e
+  auto log2_below = [](const Rational& r, int weight) {  // at most log2(r) / weight + 1 (r > 0; a radius of 0 any e)
+    if (!CGAL::is_positive(r)) return LONG_MIN / 2;
+    return (long(mpz_sizeinbase(r.numerator().mpz(), 2)) - long(mpz_sizeinbase(r.denominator().mpz(), 2)) - 1) / weight;
+  };
+  const long below = std::max(log2_below(ru, wx), log2_below(rv, wy));
+  int e = below == LONG_MIN / 2 ? 0 : int(std::max(-1000000L, below)) - 2;
   while (extent(e, wx) < ru || extent(e, wy) < rv) ++e;
   int half = -1;
   for (int attempt = 0; attempt < 4 && half < 0; ++attempt) {
