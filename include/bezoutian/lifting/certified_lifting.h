@@ -788,7 +788,10 @@ inline double certify_half_branch(const Partner_equations& eq, const Parameter_b
       const double rho = std::max(1e-6, 64 * std::max({std::fabs(hole_rel[1].lo), std::fabs(hole_rel[1].hi),
                                                        std::fabs(hole_rel[2].lo), std::fabs(hole_rel[2].hi)}));
       const std::array<D, 2> range = partner_range(eq, box, domain);
-      const std::array<D, 2> near_abs{D{yc1 - rho, yc1 + rho}, D{yc2 - rho, yc2 + rho}};
+      // (N's absolute box rounded inwards: inside the relative box [-rho, rho]^2 + y_c, so the two parts leave no
+      // sliver between them)
+      const std::array<D, 2> near_abs{D{D::next(yc1 - rho, true), D::next(yc1 + rho, false)},
+                                      D{D::next(yc2 - rho, true), D::next(yc2 + rho, false)}};
       const std::vector<std::array<D, 2>> far = complement_cover(range, {near_abs});
       std::vector<std::array<D, 2>> near;
       for (const auto& piece : complement_cover({D{-rho, rho}, D{-rho, rho}}, {{hole_rel[1], hole_rel[2]}})) {
