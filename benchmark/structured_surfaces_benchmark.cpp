@@ -7,10 +7,11 @@
 // closed-form answer, time) and, side by side in the same run when built with OpenCASCADE, GeomAPI_IntSS on the
 // same rational Bezier patches (curves found, completeness by the same measure, points off the true answer, time)
 // with the time ratio. Completeness: the largest 3D distance from a closed-form sample to the reported geometry
-// (polylines of arcs, sheets and edge lines, shared boundary curves, contact points, overlap regions).
+// (polylines of arcs, sheets and edge lines, shared boundary curves, contact points, overlap regions). The sheet
+// segments with a proved distance bound (Locus_sheet::segment_distance_bounds) and the largest such bound.
 // Peers: bash benchmark/install-peers.sh (Debian libocct-*-dev; benchmark-only). The CMake build defines
 // BEZOUTIAN_WITH_OCCT and links OpenCASCADE for this file when its headers are found.
-// Run:   build/benchmark/structured_surfaces_benchmark [repetitions=5]
+// Run:   build/benchmark/structured_surfaces_benchmark [--no-distance-bounds] [repetitions=5]
 //        build/benchmark/structured_surfaces_benchmark --time-limit S   (where a budget of S seconds ends each family)
 #include <bezoutian/intersection/Surface_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
@@ -296,14 +297,23 @@ struct Ours {
   // fibre (every partner found), are not proved
   double status_undecided = 0, fibre_undecided = 0;
   bool pinch_incomplete = false;
+  // sheet segments, those with a proved distance bound (Locus_sheet::segment_distance_bounds), the largest such
+  // bound in 3D
+  std::size_t segments = 0, segments_proved = 0;
+  double worst_bound = 0;
   std::vector<Polyline> geometry;
   std::string note;
 };
+
+// --no-distance-bounds: without the proved chord distances (Surface_intersection_options::prove_polyline_distance),
+// to measure what they cost
+bool distance_bounds = true;
 
 Ours ours(const Family& f) {
   Ours out;
   Surface_intersection_options o;
   o.polyline_tolerance = 1e-4;
+  o.prove_polyline_distance = distance_bounds;
   Surface_locus L;
   try {
     L = f.self ? self_intersection_locus(f.phi, o) : intersection_locus(f.phi, f.psi, o);
@@ -326,6 +336,12 @@ Ours ours(const Family& f) {
       out.fibre_undecided = std::max(out.fibre_undecided, a.fibre_undecided_fraction);
     }
     for (const auto& s : a.sheets) {
+      for (const auto& b : s.segment_distance_bounds) {
+        ++out.segments;
+        if (!std::isfinite(b[2])) continue;
+        ++out.segments_proved;
+        out.worst_bound = std::max(out.worst_bound, b[2]);
+      }
       Polyline l;
       for (const auto& q : s.points) l.push_back(q.point_3d);
       out.geometry.push_back(l);
@@ -463,12 +479,18 @@ int time_limit_table(double limit) {
 
 int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[1]) == "--time-limit") return time_limit_table(std::atof(argv[2]));
+  if (argc > 1 && std::string(argv[1]) == "--no-distance-bounds") {
+    distance_bounds = false;
+    --argc;
+    ++argv;
+  }
   const int repetitions = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
-  std::printf("| family | closed-form answer | ours: answered | certified | gap to the answer | time [ms] |"
+  std::printf("| family | closed-form answer | ours: answered | certified | gap to the answer | "
+              "sheet segments with a proved distance bound (largest, 3D) | time [ms] |"
 #ifdef BEZOUTIAN_WITH_OCCT
               " OCCT: curves | gap to the answer | farthest OCCT point off it | time [ms] | time ratio ours/OCCT |"
 #endif
-              "\n|---|---|---|---|---|---|"
+              "\n|---|---|---|---|---|---|---|"
 #ifdef BEZOUTIAN_WITH_OCCT
               "---|---|---|---|---|"
 #endif
@@ -482,9 +504,13 @@ int main(int argc, char** argv) {
       std::snprintf(certified, sizeof certified, "no (undecided: status %.2g %%, fibre %.2g %%%s)",
                     100 * r.status_undecided, 100 * r.fibre_undecided,
                     r.pinch_incomplete ? "; pinch points not proved complete" : "");
-    std::printf("| %s | %s | %s | %s | %s | %.2f |", f.name.c_str(), f.answer.c_str(), r.answered ? "yes" : "no",
-                certified,
-                gap < 0 ? "spurious" : (f.samples.empty() ? "none, proved" : gap_text(gap)).c_str(), 1e3 * t_ours);
+    char bounds[96] = "-";
+    if (r.segments > 0)
+      std::snprintf(bounds, sizeof bounds, "%zu of %zu (%s)", r.segments_proved, r.segments,
+                    r.segments_proved ? gap_text(r.worst_bound).c_str() : "-");
+    std::printf("| %s | %s | %s | %s | %s | %s | %.2f |", f.name.c_str(), f.answer.c_str(), r.answered ? "yes" : "no",
+                certified, gap < 0 ? "spurious" : (f.samples.empty() ? "none, proved" : gap_text(gap)).c_str(), bounds,
+                1e3 * t_ours);
 #ifdef BEZOUTIAN_WITH_OCCT
     if (f.self) {  // (GeomAPI_IntSS intersects two surfaces; OpenCASCADE has no self-intersection of one)
       std::printf(" - | - | - | - | - |\n");

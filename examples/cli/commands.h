@@ -32,6 +32,7 @@ struct Intersect_options {
   std::string svg, obj;             // patches: pictures
   double tolerance = 1e-9;          // patches: precision of traced ordinates
   double polyline_tolerance = 1e-3; // patches: chord error of the lifted polylines (midpoint test)
+  bool proved_tolerance = false;    // patches: also refine until the proved chord distance meets it
   int max_degree = 16;              // patches: largest total degree of D for CGAL's curve analysis
   double fallback_seconds = 60;     // patches: time allowed to CGAL's curve analysis (0: no limit)
   std::string patches;              // patches: "I,J" indices (0-based) of the patches to use (default 0,1 / 0)

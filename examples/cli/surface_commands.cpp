@@ -138,8 +138,13 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
           s3.push_back({q.point_3d[0], q.point_3d[1], q.point_3d[2]});
           sproved.push_back(q.status_proved);
         }
+        // per segment: proved bounds [first domain, second domain, space] on its distance from the curve (null: not
+        // proved)
+        json bounds = json::array();
+        for (const auto& b : sh.segment_distance_bounds)
+          bounds.push_back(std::isfinite(b[0]) ? json{b[0], b[1], b[2]} : json(nullptr));
         sheets.push_back({{"first", pts.size() + sh.first}, {"partner_points", sp}, {"points_3d", s3},
-                          {"genuine_proved", sproved}});
+                          {"genuine_proved", sproved}, {"segment_distance_bounds", bounds}});
       }
       arcs.push_back({{"from", pts.size()},
                       {"count", arc.points.size()},
@@ -474,11 +479,18 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
       std::cout << "\n";
       continue;
     }
-    std::size_t genuine = 0, total = 0, proved = 0, sheets = 0;
-    double worst = 0, fibre_open = 0;
+    std::size_t genuine = 0, total = 0, proved = 0, sheets = 0, segments = 0, bounded = 0;
+    double worst = 0, fibre_open = 0, largest_bound = 0;
     for (auto ei : c.edges) {
       sheets += L.arcs[ei].sheets.size();
       fibre_open = std::max(fibre_open, L.arcs[ei].fibre_undecided_fraction);
+      for (const auto& sh : L.arcs[ei].sheets)
+        for (const auto& b : sh.segment_distance_bounds) {
+          ++segments;
+          if (!std::isfinite(b[2])) continue;
+          ++bounded;
+          largest_bound = std::max({largest_bound, b[0], b[1], b[2]});
+        }
     }
     for (auto ei : c.edges)
       for (const auto& q : L.arcs[ei].points) {
@@ -493,6 +505,10 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << " genuine/phantom status proved), max residual " << worst << "\n"
               << "    " << sheets << " sheet(s) (branches of the space curve, one per partner); every partner proved "
               << "found on " << 100 * (1 - fibre_open) << " % of each arc at least\n";
+    if (segments > 0)
+      std::cout << "    sheet polylines: " << bounded << "/" << segments
+                << " segments proved within " << largest_bound
+                << " of the curve (parameter domains and 3D; the others are next to folds or singular points)\n";
   }
   if (L.self_intersection) {
     std::cout << "  " << L.pinch_points.size() << " pinch point(s) of the patch in the box"
@@ -673,6 +689,7 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
   so.tolerance = o.tolerance;
   if (!(o.polyline_tolerance >= 0)) throw bezoutian::Invalid_input("--polyline-tolerance must be >= 0 (0: uniform samples only)");
   so.polyline_tolerance = o.polyline_tolerance;
+  so.refine_to_proved_distance = o.proved_tolerance;
   so.max_total_degree_for_topology = o.max_degree;
   so.whole_plane_topology = bezoutian::Cgal_curve_analysis{};
   // the input size limits and the time budget, checked by the library (Limit_exceeded names the limit and the stage)
@@ -743,6 +760,9 @@ Register self_registration([](CLI::App& app) {
   sub->add_option("--polyline-tolerance", o->polyline_tolerance,
                   "refine the lifted polylines until their chords are this close to the curve, in 3D and in the "
                   "parameter domain (midpoint test; default 1e-3; 0: the uniform samples of the topology)");
+  sub->add_flag("--proved-tolerance", o->proved_tolerance,
+                "also refine until the proved bound on each chord's distance from the curve meets the polyline "
+                "tolerance (about 1.3 times the points; the bounds are reported either way)");
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_option("--fallback-seconds", o->fallback_seconds,

@@ -33,6 +33,7 @@
 #include <bezoutian/lifting/arc_refinement.h>
 #include <bezoutian/lifting/partner_sheets.h>
 #include <bezoutian/lifting/pinch_points.h>
+#include <bezoutian/lifting/polyline_distance_bounds.h>
 #include <bezoutian/elimination/Implicit_equation.h>
 #include <bezoutian/elimination/Maximal_minor_projection.h>
 #include <bezoutian/geometry/Rational_bezier_patch.h>
@@ -89,6 +90,16 @@ struct Surface_intersection_options {
   double polyline_tolerance = 1e-3;
   /// At most this many points added by the refinement per locus.
   std::size_t max_refinement_points = 20000;
+  /// Prove a bound on the distance between each segment of every sheet's polylines and the curve it draws
+  /// (Locus_sheet::segment_distance_bounds; lifting/polyline_distance_bounds.h): a few interval evaluations per
+  /// segment. The refinement's midpoint test aims at `polyline_tolerance`; these bounds are what is proved (up to
+  /// about 10 times the tolerance on the structured benchmark, doc/surface_intersection.md).
+  bool prove_polyline_distance = true;
+  /// With prove_polyline_distance: the refinement also halves a span while the interval bound of its chord exceeds
+  /// `polyline_tolerance` (by at most 16 times: beyond, next to a fold, it is left as is), so that the proved
+  /// bounds meet the tolerance. About 1.3 times the points; the finer spans need more of the exclusion budget
+  /// (`lifting_exclusion_budget`), whose exhaustion leaves statuses undecided.
+  bool refine_to_proved_distance = false;
   /// At most this many traced points per locus get their complete fibre (every partner, about 1 ms each on
   /// bicubic pairs): the arcs where the kernel's partner alone is not proved to be every partner, in order, while
   /// the count lasts; the others keep Locus_arc::fibre_undecided_fraction > 0.
@@ -984,6 +995,56 @@ inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations
   }
 }
 
+// The proved distance between every sheet segment and the branch it draws (lifting/polyline_distance_bounds.h),
+// on the segments of graph pieces and of half-branches whose chain proved a span with one partner in the domain.
+inline void bound_sheet_polylines(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                                  const Half_branch_chains* chains, const Time_budget* time = nullptr) {
+  if (L.topology_method != "subdivision" || !o.prove_polyline_distance) return;
+  const Patch_jacobian_enclosure phi(eq, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  // (the uniform samples of tolerance 0: the bound of the first sub-division that proves one)
+  const double target = o.polyline_tolerance > 0 ? o.polyline_tolerance : inf;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    if (time) time->check("polyline distance bounds");
+    const Curve_topology_edge& e = L.topology.edges[k];
+    for (Locus_sheet& s : L.arcs[k].sheets) {
+      s.segment_distance_bounds.clear();
+      auto reported = [&](std::size_t j) {
+        const Locus_point& q = s.points[j];
+        Reported_sheet_point r;
+        r.x = e.polyline[s.first + j];
+        r.y = q.partner;
+        r.first = q.first;
+        r.second = q.second;
+        r.space = q.point_3d;
+        r.partner_enclosure = q.partner_enclosure;
+        return r;
+      };
+      for (std::size_t j = 0; j + 1 < s.points.size(); ++j) {
+        const std::size_t i = s.first + j;
+        std::array<double, 3> bound{inf, inf, inf};
+        if (i + 1 < e.polyline.size())
+          for (const Curve_topology_piece& pc : e.pieces) {
+            if (!(pc.first <= i && i + 1 <= pc.last)) continue;
+            if (pc.graph_axis >= 0) {
+              bound = segment_distance_bound(eq, phi, pc.graph_axis, pc.cell, &L.equation.square_free, reported(j),
+                                             reported(j + 1), target);
+            } else if (chains && !o.partner_domain_unbounded) {
+              Chain_identification c;
+              c.chain = chains->find(pc);
+              c.domain = o.partner_domain;
+              if (c.chain)
+                bound = segment_distance_bound(eq, phi, c.chain->axis, pc.cell, &L.equation.square_free, reported(j),
+                                               reported(j + 1), target, &c);
+            }
+            break;
+          }
+        s.segment_distance_bounds.push_back(bound);
+      }
+    }
+  }
+}
+
 // Complete lifting (lifting/partner_sheets.h): every partner of every traced point, chained into the sheets of
 // each arc, and the proof span by span that they are all. An arc proved phantom everywhere (no genuine point,
 // nothing undecided) has no sheet, proved. A traced point that the kernel lifted to a partner outside the domain
@@ -996,6 +1057,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
   budget.left = budget.fallback_left = o.lifting_exclusion_budget;
   if (time) budget.interrupt = [time]() { time->check("complete lifting"); };
   std::unique_ptr<Double_curve_equation> D_double;
+  const Patch_jacobian_enclosure phi_jacobian(eq, 0);
   std::size_t inserted = 0, full_fibres = 0;
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     if (time) time->check("complete lifting");
@@ -1082,6 +1144,23 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
         model.inside = [&](const std::array<double, 2>& x, const std::array<double, 2>& y) {
           return partner_in_domain(eq, o.partner_domain, o.partner_domain_unbounded, x, y, 1e-12);
         };
+        if (o.prove_polyline_distance && o.refine_to_proved_distance)
+          model.bound = [&](int axis, const std::array<double, 2>& xa, const std::array<double, 2>& ya,
+                            const std::array<double, 2>& xb, const std::array<double, 2>& yb) {
+            auto reported = [&](const std::array<double, 2>& x, const std::array<double, 2>& y) {
+              const auto l = model.lift(x, y);
+              Reported_sheet_point r;
+              r.x = x;
+              r.y = y;
+              r.first = {l[0], l[1]};
+              r.second = {l[2], l[3]};
+              r.space = {l[4], l[5], l[6]};
+              const double nan = std::numeric_limits<double>::quiet_NaN();
+              r.partner_enclosure = {{{nan, nan}, {nan, nan}}};
+              return r;
+            };
+            return segment_distance_estimate(eq, phi_jacobian, axis, reported(xa, ya), reported(xb, yb));
+          };
         model.insert = [&](std::size_t i, const std::array<double, 2>& x, const std::vector<std::array<double, 2>>& F) {
           // lifted from a partner in the domain if it has one (the kernel's ratio can run away near a seam)
           const std::array<double, 2>* seed = F.empty() ? nullptr : &F[0];
@@ -1413,6 +1492,7 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
+  internal::bound_sheet_polylines(L, internal::Partner_equations(patch), o, &chains, &budget);
   internal::prove_linear_partner_lines(L, internal::Partner_equations(patch), o,
                                        2 * (patch.degree_u() + patch.degree_v()));
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
@@ -1621,6 +1701,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
+  internal::bound_sheet_polylines(L, internal::Partner_equations(phi, psi), o, &chains, &budget);
   internal::prove_linear_partner_lines(L, internal::Partner_equations(phi, psi), o,
                                        phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);

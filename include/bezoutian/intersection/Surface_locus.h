@@ -12,6 +12,7 @@
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/topology/Curve_topology.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdio>
@@ -50,7 +51,25 @@ struct Locus_point {
 struct Locus_sheet {
   std::size_t first = 0;            ///< index in Locus_arc::points of its first point
   std::vector<Locus_point> points;  ///< over Locus_arc::points[first], [first + 1], ...: same projection, this partner
+  /// Per segment (points[j] to points[j + 1]): proved bounds {first parameter domain, second, space} on the
+  /// distance between the chord of the reported points (Locus_point::first, second, point_3d) and the branch of
+  /// the curve over the segment, both ways (lifting/polyline_distance_bounds.h); infinity where not proved (a
+  /// segment on a half-branch inside a singular point's box, next to a fold). Empty when not computed
+  /// (Surface_intersection_options::prove_polyline_distance).
+  std::vector<std::array<double, 3>> segment_distance_bounds;
 };
+
+/// The largest of the sheet's segment bounds, per entry {first, second, space}: infinity if a segment is not proved
+/// or the bounds were not computed (a single point: 0).
+inline std::array<double, 3> sheet_distance_bound(const Locus_sheet& s) {
+  const double inf = std::numeric_limits<double>::infinity();
+  if (s.points.size() < 2) return {0, 0, 0};
+  if (s.segment_distance_bounds.size() + 1 != s.points.size()) return {inf, inf, inf};
+  std::array<double, 3> m{0, 0, 0};
+  for (const auto& b : s.segment_distance_bounds)
+    for (std::size_t c = 0; c < 3; ++c) m[c] = std::max(m[c], b[c]);
+  return m;
+}
 
 /// One arc of D = 0 inside the box, traced.
 struct Locus_arc {

@@ -10,7 +10,10 @@
 //    number of partners in the domain changes too: a sheet leaving the domain is the split points' business); or
 //  - for a partner at the midpoint, the chord of the nearest partners at the ends misses its point by more than the
 //    tolerance, in 3D or in either parameter domain (the midpoint test of adaptive sampling: a floating-point
-//    estimate of the distance, not a bound).
+//    estimate of the distance, not a bound); or the interval bound on the distance between that chord and the
+//    zero curve through its ends exceeds the tolerance, by at most 16 times (polyline_distance_bounds.h: the bound
+//    the sheets' proofs report, where it is proved; far above it, next to a fold, the span is left to the
+//    midpoint test).
 // The new point of the arc is the root of D along the line of its graph coordinate inside the piece's cell, where
 // the subdivision proved D = 0 a graph (one root): regula falsi on the cell's range. Floating point throughout;
 // the proofs are the span proofs of partner_sheets.h on the refined arc.
@@ -105,6 +108,12 @@ struct Arc_refinement_model {
   std::function<bool(int, double, std::array<double, 3>&)> solve;
   /// whether the partner y of x puts both parameter points inside the domains (a sheet's genuine part)
   std::function<bool(const std::array<double, 2>&, const std::array<double, 2>&)> inside;
+  /// optional: a proved bound on the distance between the chord of the lifts of (xa, ya), (xb, yb) and the zero
+  /// curve through them along the coordinate `axis` (polyline_distance_bounds.h: segment_distance_estimate),
+  /// infinity where not proved; a span whose bound exceeds the tolerance is halved too
+  std::function<double(int, const std::array<double, 2>&, const std::array<double, 2>&, const std::array<double, 2>&,
+                       const std::array<double, 2>&)>
+      bound;
 };
 
 /// Refines the edge `e` (its polyline and pieces are updated in place) with `fibres` kept parallel to the
@@ -162,7 +171,7 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
   };
   // the chord test at the midpoint m of the span (a, b): for each partner at m, the 7 coordinates of its lift
   // against the mean of the lifts of the nearest partners at a and b
-  auto chord_misses = [&](const std::array<double, 2>& xa, const std::vector<std::array<double, 2>>& Fa,
+  auto chord_misses = [&](int axis, const std::array<double, 2>& xa, const std::vector<std::array<double, 2>>& Fa,
                           const std::array<double, 2>& xb, const std::vector<std::array<double, 2>>& Fb,
                           const std::array<double, 2>& xm, const std::vector<std::array<double, 2>>& Fm) {
     for (const auto& y : Fm) {
@@ -176,6 +185,12 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
         dq += std::pow(m[2 + c] - 0.5 * (la[2 + c] + lb[2 + c]), 2);
       }
       if (!(std::sqrt(std::max({d3, dp, dq})) <= tolerance)) return true;
+      if (model.bound) {
+        const double b = model.bound(axis, xa, Fa[ka], xb, Fb[kb]);
+        // (far above the tolerance the span runs into a fold, where the partner grows like a square root and
+        // halving gains little while the fibre proofs of the tiny spans cost much: its bound is reported as is)
+        if (b > tolerance && b <= 16 * tolerance) return true;
+      }
     }
     return false;
   };
@@ -300,7 +315,7 @@ inline std::size_t refine_arc(Curve_topology_edge& e, std::vector<std::vector<st
       }
       // (a midpoint between genuine points without a partner in the domain, as at a seam where the partner runs
       // along the domain's boundary, adds no point to any sheet)
-      if (inside_count(x, F) > 0 && (F.size() != fibres[i].size() || chord_misses(xa, fibres[i], xb, fibres[i + 1], x, F))) {
+      if (inside_count(x, F) > 0 && (F.size() != fibres[i].size() || chord_misses(axis, xa, fibres[i], xb, fibres[i + 1], x, F))) {
         insert_after(i, x, std::move(F));  // and refine the first half again
         continue;
       }
