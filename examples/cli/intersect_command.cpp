@@ -25,7 +25,7 @@ bezoutian_cli::Register intersect_registration([](CLI::App& app) {
                   "both parameter domains (midpoint test; default 1e-3; 0: the uniform samples of the topology)");
   sub->add_flag("--proved-tolerance", o->proved_tolerance,
                 "patches: also refine until the proved bound on each chord's distance from the curve meets the "
-                "polyline tolerance (about 1.3 times the points; the bounds are reported either way)");
+                "polyline tolerance (1.3 to 3.3 times the points; the bounds are reported either way)");
   sub->add_option("--max-degree", o->max_degree, "patches: largest total degree of D for CGAL's curve analysis");
   sub->add_option("--fallback-seconds", o->fallback_seconds,
                   "patches: stop CGAL's curve analysis after this many seconds and answer without it (default 60, 0: "

@@ -762,7 +762,7 @@ Register self_registration([](CLI::App& app) {
                   "parameter domain (midpoint test; default 1e-3; 0: the uniform samples of the topology)");
   sub->add_flag("--proved-tolerance", o->proved_tolerance,
                 "also refine until the proved bound on each chord's distance from the curve meets the polyline "
-                "tolerance (about 1.3 times the points; the bounds are reported either way)");
+                "tolerance (1.3 to 3.3 times the points; the bounds are reported either way)");
   sub->add_option("--max-degree", o->max_degree,
                   "largest total degree of D for CGAL's curve analysis when the subdivision does not certify (default 16)");
   sub->add_option("--fallback-seconds", o->fallback_seconds,

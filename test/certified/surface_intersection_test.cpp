@@ -1782,15 +1782,7 @@ TEST_CASE("polyline distance bounds: proved chord distances hold against closed 
     const internal::Partner_equations eq(doc.patches[0], doc.patches[1]);
     const internal::Patch_jacobian_enclosure phi(eq, 0);
     auto reported = [&](std::size_t j) {
-      const Locus_point& q = sheet->points[j];
-      internal::Reported_sheet_point r;
-      r.x = e.polyline[sheet->first + j];
-      r.y = q.partner;
-      r.first = q.first;
-      r.second = q.second;
-      r.space = q.point_3d;
-      r.partner_enclosure = q.partner_enclosure;
-      return r;
+      return internal::reported_sheet_point(sheet->points[j], e.polyline[sheet->first + j]);
     };
     const std::size_t j = 2, i = sheet->first + j;
     const Curve_topology_piece* piece = nullptr;

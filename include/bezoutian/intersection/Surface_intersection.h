@@ -92,13 +92,14 @@ struct Surface_intersection_options {
   std::size_t max_refinement_points = 20000;
   /// Prove a bound on the distance between each segment of every sheet's polylines and the curve it draws
   /// (Locus_sheet::segment_distance_bounds; lifting/polyline_distance_bounds.h): a few interval evaluations per
-  /// segment. The refinement's midpoint test aims at `polyline_tolerance`; these bounds are what is proved (up to
-  /// about 10 times the tolerance on the structured benchmark, doc/surface_intersection.md).
+  /// segment (1.14 times the structured benchmark's time). The refinement's midpoint test aims at
+  /// `polyline_tolerance`; these bounds are what is proved (up to about 10 times the tolerance on the structured
+  /// benchmark, doc/surface_intersection.md §4f).
   bool prove_polyline_distance = true;
   /// With prove_polyline_distance: the refinement also halves a span while the interval bound of its chord exceeds
   /// `polyline_tolerance` (by at most 16 times: beyond, next to a fold, it is left as is), so that the proved
-  /// bounds meet the tolerance. About 1.3 times the points; the finer spans need more of the exclusion budget
-  /// (`lifting_exclusion_budget`), whose exhaustion leaves statuses undecided.
+  /// bounds meet the tolerance. 1.3 to 3.3 times the points on the structured benchmark; the finer spans need more of
+  /// the exclusion budget (`lifting_exclusion_budget`), whose exhaustion leaves statuses undecided.
   bool refine_to_proved_distance = false;
   /// At most this many traced points per locus get their complete fibre (every partner, about 1 ms each on
   /// bicubic pairs): the arcs where the kernel's partner alone is not proved to be every partner, in order, while
@@ -995,6 +996,18 @@ inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations
   }
 }
 
+/// A sheet's point `q` over the arc point `x` as the distance bounds read it (lifting/polyline_distance_bounds.h).
+inline Reported_sheet_point reported_sheet_point(const Locus_point& q, const std::array<double, 2>& x) {
+  Reported_sheet_point r;
+  r.x = x;
+  r.y = q.partner;
+  r.first = q.first;
+  r.second = q.second;
+  r.space = q.point_3d;
+  r.partner_enclosure = q.partner_enclosure;
+  return r;
+}
+
 // The proved distance between every sheet segment and the branch it draws (lifting/polyline_distance_bounds.h),
 // on the segments of graph pieces and of half-branches whose chain proved a span with one partner in the domain.
 inline void bound_sheet_polylines(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
@@ -1009,17 +1022,7 @@ inline void bound_sheet_polylines(Surface_locus& L, const Partner_equations& eq,
     const Curve_topology_edge& e = L.topology.edges[k];
     for (Locus_sheet& s : L.arcs[k].sheets) {
       s.segment_distance_bounds.clear();
-      auto reported = [&](std::size_t j) {
-        const Locus_point& q = s.points[j];
-        Reported_sheet_point r;
-        r.x = e.polyline[s.first + j];
-        r.y = q.partner;
-        r.first = q.first;
-        r.second = q.second;
-        r.space = q.point_3d;
-        r.partner_enclosure = q.partner_enclosure;
-        return r;
-      };
+      auto reported = [&](std::size_t j) { return reported_sheet_point(s.points[j], e.polyline[s.first + j]); };
       for (std::size_t j = 0; j + 1 < s.points.size(); ++j) {
         const std::size_t i = s.first + j;
         std::array<double, 3> bound{inf, inf, inf};
