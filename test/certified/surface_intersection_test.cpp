@@ -1967,6 +1967,19 @@ TEST_CASE("structured surfaces: a sphere cut by a plane, two branches over one l
   CHECK(gap[2] < 5e-3);
   // the same against the points whose genuine status is proved: every span proved phantom is phantom
   check_sheets_complete(proved_genuine_sheets(L), samples, 5e-3);
+  // the proved chord distances (lifting/polyline_distance_bounds.h) hold against the closed form; only the segment of
+  // each sheet that ends at the fold, where the two partners meet, has none
+  std::vector<Sample> dense;
+  for (int k = 0; k <= 40000; ++k) {
+    const double bb = 0.5 + 1.5 * k / 40000;
+    const double r = 15.0 / 17, x = r * (1 - bb * bb) / (1 + bb * bb), y = r * 2 * bb / (1 + bb * bb);
+    dense.push_back({std::array<double, 3>{0.5, (bb - 0.5) / 1.5, 0}, std::array<double, 3>{x, y, 8.0 / 17},
+                     std::array<double, 3>{(x + 1) / 2, y, 0}});
+  }
+  const auto bounds = check_distance_bounds(L, {dense});
+  CHECK(bounds[0] >= 20);
+  CHECK(bounds[1] + 2 >= bounds[0]);
+  CHECK(bounds[2] <= 1e-2);
 }
 
 // Pieces of one parametrized surface: Psi = Phi o M with M(s, t) = (alpha(s), beta(t)) (or exchanged) for Moebius
