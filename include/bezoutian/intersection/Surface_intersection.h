@@ -1024,6 +1024,8 @@ inline void bound_sheet_polylines(Surface_locus& L, const Partner_equations& eq,
       s.segment_distance_bounds.clear();
       auto reported = [&](std::size_t j) { return reported_sheet_point(s.points[j], e.polyline[s.first + j]); };
       for (std::size_t j = 0; j + 1 < s.points.size(); ++j) {
+        // (up to 85 sub-span proofs per segment, and an arc may have thousands: the budget is checked within)
+        if (time && j % 64 == 63) time->check("polyline distance bounds");
         const std::size_t i = s.first + j;
         std::array<double, 3> bound{inf, inf, inf};
         if (i + 1 < e.polyline.size())

@@ -193,6 +193,46 @@ inline bool on_chain(const Chain_identification& c, int axis, const Double_inter
   return false;
 }
 
+/// x lies in the box (every coordinate).
+inline bool box_within(const std::array<Double_interval, 3>& x, const std::array<Double_interval, 3>& box) {
+  for (std::size_t c = 0; c < 3; ++c)
+    if (!(box[c].lo <= x[c].lo && x[c].hi <= box[c].hi)) return false;
+  return true;
+}
+
+/// Step 2 at an end t of a graph piece's segment: the sheet's exact point there, (g(t), y) with y in the reported
+/// point's proved partner enclosure, is the zero of E(t, .) in W. g(t) lies in the other coordinate of `at_t` (the
+/// enclosure of the anchored zero curve's point at t); Krawczyk's image of the box U = at_t,0 x enclosure holds every
+/// zero of E(t, .) in U, so U may be cut down to it; once U lies in W, where the zero is unique, the sheet's point
+/// is that zero.
+inline bool sheet_point_is_zero_in(const Partner_equations& eq, int axis, const Reported_sheet_point& r, double t,
+                                   const std::array<Double_interval, 3>& at_t,
+                                   const std::array<Double_interval, 3>& W) {
+  using D = Double_interval;
+  std::array<D, 3> U = at_t;
+  for (std::size_t c = 0; c < 2; ++c) {
+    const auto& e = r.partner_enclosure[c];
+    if (!(e[0] <= e[1])) return false;  // (not proved: NaN)
+    U[c + 1] = D{e[0], e[1]};
+  }
+  for (int it = 0; it < 12; ++it) {
+    if (box_within(U, W)) return true;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::array<D, 3> image{D{nan, nan}, D{nan, nan}, D{nan, nan}}, trial = U;
+    parametric_partner_krawczyk(eq, axis, D{t, t}, trial, &image, false);
+    bool narrower = false;
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (!(std::isfinite(image[c].lo) && std::isfinite(image[c].hi))) return false;
+      const D cut{std::max(U[c].lo, image[c].lo), std::min(U[c].hi, image[c].hi)};
+      if (!(cut.lo <= cut.hi)) return false;  // (no zero in U: the enclosure did not hold the sheet's point)
+      narrower = narrower || cut.hi - cut.lo < 0.9 * (U[c].hi - U[c].lo);
+      U[c] = cut;
+    }
+    if (!narrower) return false;
+  }
+  return box_within(U, W);
+}
+
 /// Proved bounds {first domain, second domain, space} on the distance between the chord of two consecutive
 /// reported points p, q of a sheet (on the graph piece `cell` with graph coordinate `axis`, or on the half-branch
 /// of `chain`, whose coordinate `axis` is) and the branch over that span, from `pieces` sub-spans (header
@@ -233,17 +273,12 @@ inline std::array<double, 3> segment_distance_bound_in(const Partner_equations& 
     if (eq.self_intersection() && K[1].contains_zero() && K[2].contains_zero()) return none;  // (the trivial one)
     // the curves of consecutive sub-spans are one: the zero at t0 of the previous one's box lies in W, or this
     // one's in the previous box (unique in either, so the two curves share their point at t0)
-    auto within = [](const std::array<D, 3>& x, const std::array<D, 3>& box) {
-      for (std::size_t c = 0; c < 3; ++c)
-        if (!(box[c].lo <= x[c].lo && x[c].hi <= box[c].hi)) return false;
-      return true;
-    };
     std::array<D, 3> at = W;
     if (!parametric_partner_krawczyk(eq, axis, D{t0, t0}, at, nullptr, false)) return none;
     if (k == 0) end_a = at;
-    if (k > 0 && !within(at, W_prev)) {
+    if (k > 0 && !box_within(at, W_prev)) {
       std::array<D, 3> before = W_prev;
-      if (!parametric_partner_krawczyk(eq, axis, D{t0, t0}, before, nullptr, false) || !within(before, W)) return none;
+      if (!parametric_partner_krawczyk(eq, axis, D{t0, t0}, before, nullptr, false) || !box_within(before, W)) return none;
     }
     // 2. the arc with a partner (anchored once), and this sheet's partner (its proved enclosure at an end)
     if (!identify) {
@@ -253,38 +288,11 @@ inline std::array<double, 3> segment_distance_bound_in(const Partner_equations& 
     } else if (k == pieces / 2 && !zero_curve_anchored(eq, axis, T, W, cell, curve)) {
       return none;
     }
-    // the sheet's exact point at t, (g(t), y) with y in its proved enclosure, is gamma(t): g(t) = gamma_0(t) lies in
-    // `at`; Krawczyk's image of the box U = at_0 x enclosure holds every zero of E(t, .) in U, so U may be replaced
-    // by U cut with the image; once U lies in W, where the zero is unique, the sheet's point is gamma(t)
-    auto same_zero = [&](const Reported_sheet_point& r, double t, const std::array<D, 3>& at_t) {
-      std::array<D, 3> U = at_t;
-      for (std::size_t c = 0; c < 2; ++c) {
-        const auto& e = r.partner_enclosure[c];
-        if (!(e[0] <= e[1])) return false;  // (not proved: NaN)
-        U[c + 1] = D{e[0], e[1]};
-      }
-      for (int it = 0; it < 12; ++it) {
-        if (within(U, W)) return true;
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        std::array<D, 3> image{D{nan, nan}, D{nan, nan}, D{nan, nan}}, trial = U;
-        parametric_partner_krawczyk(eq, axis, D{t, t}, trial, &image, false);
-        bool narrower = false;
-        for (std::size_t c = 0; c < 3; ++c) {
-          if (!(std::isfinite(image[c].lo) && std::isfinite(image[c].hi))) return false;
-          const D cut{std::max(U[c].lo, image[c].lo), std::min(U[c].hi, image[c].hi)};
-          if (!(cut.lo <= cut.hi)) return false;  // (no zero in U: the enclosure did not hold the sheet's point)
-          narrower = narrower || cut.hi - cut.lo < 0.9 * (U[c].hi - U[c].lo);
-          U[c] = cut;
-        }
-        if (!narrower) return false;
-      }
-      return within(U, W);
-    };
-    if (k == 0) identified = !identify || chain || same_zero(ra, a, at);
+    if (k == 0) identified = !identify || chain || sheet_point_is_zero_in(eq, axis, ra, a, at, W);
     if (k + 1 == pieces) {
       end_b = W;
       if (!parametric_partner_krawczyk(eq, axis, D{t1, t1}, end_b, nullptr, false)) return none;
-      identified = identified || same_zero(rb, b, end_b);
+      identified = identified || sheet_point_is_zero_in(eq, axis, rb, b, end_b, W);
     }
     // 3. slopes over T_k
     std::array<D, 4> slope;
