@@ -299,7 +299,7 @@ nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
                        // outward-rounded: the double box still holds the exact point
                        {"box", {{CGAL::to_interval(p.box[0][0]).first, CGAL::to_interval(p.box[0][1]).second},
                                 {CGAL::to_interval(p.box[1][0]).first, CGAL::to_interval(p.box[1][1]).second}}},
-                       {"kernel_direction", p.chart == 0 ? "(1, m)" : "(m, 1)"},
+                       {"kernel_direction", p.rank_zero ? "none (the Jacobian is zero)" : p.chart == 0 ? "(1, m)" : "(m, 1)"},
                        {"m", CGAL::to_double((p.m[0] + p.m[1]) / 2)}});
     j["pinch_points"] = pinch;
     j["pinch_points_complete"] = L.pinch_points_complete;
@@ -515,8 +515,11 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
               << (L.pinch_points_complete ? " (all, proved)" : " (search incomplete: " + L.pinch_points_note + ")")
               << "\n";
     for (const auto& p : L.pinch_points)
-      std::cout << "    pinch point (" << p.u << ", " << p.v << "), kernel direction "
-                << (p.chart == 0 ? "(1, m)" : "(m, 1)") << " with m = " << CGAL::to_double((p.m[0] + p.m[1]) / 2) << "\n";
+      if (p.rank_zero)
+        std::cout << "    pinch point (" << p.u << ", " << p.v << "), the Jacobian is zero there\n";
+      else
+        std::cout << "    pinch point (" << p.u << ", " << p.v << "), kernel direction "
+                  << (p.chart == 0 ? "(1, m)" : "(m, 1)") << " with m = " << CGAL::to_double((p.m[0] + p.m[1]) / 2) << "\n";
   }
   if (!L.split_points.empty())
     std::cout << "  " << L.split_points.size()

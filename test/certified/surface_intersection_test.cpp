@@ -470,18 +470,41 @@ TEST_CASE("pinch points: found exactly where the Jacobian has rank 1; a degenera
   }
   // The folded patch of the lifting test: phi_u = (2(u - 3/10), 0, v - 1/3) vanishes at (3/10, 1/3), the pinch
   // point of the double curve v = 1/3 (partner 3/5 - u). At (3/10, 0), phi_v = (0, 2v, u - 3/10) vanishes too: a
-  // rank-1 point whose system is not simple (the fold v -> v^2 meets it): the search must say it is incomplete.
+  // rank-1 point whose system G is not simple (the fold v -> v^2 meets it), which no Krawczyk box isolates. By hand,
+  // phi_u x phi_v = (-2v (v - 1/3), -2 (u - 3/10)^2, 4 v (u - 3/10)) vanishes exactly at these two points, with
+  // kernel directions (1, 0) and (0, 1): the exact route finds both, and the search is complete.
   {
     const Patch folded = from_power({"(u-3/10)^2", "v^2", "(u-3/10)*(v-1/3)"}, 3, 2);
+    CHECK_FALSE(internal::find_pinch_points_by_subdivision(folded, Parameter_box{}).complete);
     const Surface_locus L = self_intersection_locus(folded);
-    CHECK_FALSE(L.pinch_points_complete);
-    CHECK(L.pinch_points_note.find("0.300000, 0.000000") != std::string::npos);
-    REQUIRE(L.pinch_points.size() == 1);
-    const Pinch_point& p = L.pinch_points[0];
-    CHECK(p.box[0][0] <= Q(3, 10));
-    CHECK(Q(3, 10) <= p.box[0][1]);
-    CHECK(p.box[1][0] <= Q(1, 3));
-    CHECK(Q(1, 3) <= p.box[1][1]);
+    CHECK(L.pinch_points_complete);
+    REQUIRE(L.pinch_points.size() == 2);
+    const std::array<std::array<Q, 2>, 2> expected{{{Q(3, 10), Q(0)}, {Q(3, 10), Q(1, 3)}}};
+    for (int k = 0; k < 2; ++k) {
+      const Pinch_point& p = L.pinch_points[std::size_t(k)];
+      const auto& x = expected[p.v < 0.2 ? 0 : 1];
+      CHECK(p.box[0][0] <= x[0]);
+      CHECK(x[0] <= p.box[0][1]);
+      CHECK(p.box[1][0] <= x[1]);
+      CHECK(x[1] <= p.box[1][1]);
+      CHECK_FALSE(p.rank_zero);
+      CHECK(p.chart == (p.v < 0.2 ? 1 : 0));  // (0, 1) at the fold, (1, 0) at the pinch point: m = 0
+      CHECK(p.m[0] <= 0);
+      CHECK(0 <= p.m[1]);
+    }
+    CHECK(std::fabs(L.pinch_points[0].v - L.pinch_points[1].v) > 0.3);
+  }
+  // A patch whose Jacobian vanishes at (1/2, 1/2): ((u - 1/2)^2, (v - 1/2)^2, (u - 1/2)(v - 1/2)) has
+  // phi_u = (2(u - 1/2), 0, v - 1/2) and phi_v = (0, 2(v - 1/2), u - 1/2), both zero there and independent
+  // elsewhere (their cross product is (-2 (v - 1/2)^2, -2 (u - 1/2)^2, 4 (u - 1/2)(v - 1/2))): one rank-zero point.
+  {
+    const Patch cone = from_power({"(u-1/2)^2", "(v-1/2)^2", "(u-1/2)*(v-1/2)"}, 2, 2);
+    const Pinch_point_search r = internal::find_pinch_points(cone, Parameter_box{});
+    CHECK(r.complete);
+    REQUIRE(r.points.size() == 1);
+    CHECK(r.points[0].rank_zero);
+    CHECK(r.points[0].box[0][0] == Q(1, 2));
+    CHECK(r.points[0].box[1][1] == Q(1, 2));
   }
   // Random (2,2) polynomial patches of the benchmark: the search is complete, and every pinch point lies on D = 0
   // (the closure of the double curve): D over its proved box contains 0 and is tiny against D's coefficients.
@@ -599,6 +622,86 @@ TEST_CASE("certified lifting: genuine and phantom parts of a double curve with a
   CHECK(phantom_proved > 5);
   // every enclosure is tightened at its point (Krawczyk with the graph coordinate fixed)
   CHECK(tight == genuine_proved);
+  // The whole locus is certified. D = 0 is the lines v = 1/3 and u = 3/10; along u = 3/10 the first coordinate
+  // equation (u' - 3/10)^2 = 0 has a double root, so only the exact fibre over the line proves it phantom (its
+  // partners (0, 0) and (0, -2v), the second outside the domain); the rank-one point (3/10, 0) is found exactly.
+  std::string why;
+  CHECK(locus_certified(L, &why));
+  INFO(why);
+  std::size_t phantom_line = 0;
+  for (const auto& a : L.arcs)
+    for (std::size_t i = 1; i + 1 < a.points.size(); ++i) {
+      const Locus_point& q = a.points[i];
+      if (std::fabs(q.projection[0] - 0.3) > 1e-9) continue;
+      ++phantom_line;
+      CHECK(q.status_proved);
+      CHECK_FALSE(q.genuine);
+    }
+  CHECK(phantom_line > 20);
+  // completeness: every sample (u, 1/3), u in [0, 3/5], of the closed-form double curve lies within the proved
+  // polyline distance (plus the sample's own spacing) of a reported genuine sheet, in the first parameter domain,
+  // with the partner (3/5 - u, 1/3) in the second
+  double worst = 0;
+  for (int j = 0; j <= 6000; ++j) {
+    const double u = 0.6 * j / 6000;
+    double best = HUGE_VAL;
+    for (const auto& a : L.arcs)
+      for (const Locus_sheet& s : a.sheets)
+        for (std::size_t k = 0; k + 1 < s.points.size(); ++k) {
+          const auto &p = s.points[k], &q = s.points[k + 1];
+          auto segment = [&](const std::array<double, 2>& A, const std::array<double, 2>& B, double x, double y) {
+            const double dx = B[0] - A[0], dy = B[1] - A[1], l2 = dx * dx + dy * dy;
+            const double h = l2 > 0 ? std::min(1.0, std::max(0.0, ((x - A[0]) * dx + (y - A[1]) * dy) / l2)) : 0;
+            return std::hypot(A[0] + h * dx - x, A[1] + h * dy - y);
+          };
+          best = std::min(best, std::max(segment(p.first, q.first, u, 1.0 / 3), segment(p.second, q.second, 0.6 - u, 1.0 / 3)));
+        }
+    worst = std::max(worst, best);
+  }
+  CHECK(worst < 2e-3);
+}
+
+// The exact fibre over a rational line (lifting/exact_line_fibres.h), against closed forms.
+TEST_CASE("exact fibre over a line: the folded patch's lines, and a partner conic refused", "[surface][lifting]") {
+  const Patch folded = bezoutian_test::patch_from_power({"(u-3/10)^2", "v^2", "(u-3/10)*(v-1/3)"}, 3, 2);
+  const internal::Partner_equations eq(folded);
+  // the components as the set {(a1, b1, a2, b2)} of w(t) = (a1 + b1 t, a2 + b2 t)
+  auto components = [](const internal::Exact_line_fibre& F) {
+    std::set<std::array<Q, 4>> out;
+    for (const auto& k : F.components) out.insert({k.a[0], k.b[0], k.a[1], k.b[1]});
+    return out;
+  };
+  // u = 3/10, t = v: Phi(3/10, v) = (0, v^2, 0) = Phi(u', v') iff u' = 3/10 and v' = +-v; w = (Q_u, P_v) =
+  // (u', v'): the trivial (3/10, t) and (3/10, -t)
+  internal::Exact_line_fibre F = internal::exact_line_fibre(eq, Parameter_box{}, 0, Q(3, 10), {Q(0), Q(1)});
+  REQUIRE(F.proved);
+  CHECK(components(F) == std::set<std::array<Q, 4>>{{Q(3, 10), Q(0), Q(0), Q(1)}, {Q(3, 10), Q(0), Q(0), Q(-1)}});
+  // so no point of the line has a genuine partner: (3/10, -v) is outside the domain but at v = 0, where it is trivial
+  for (const Q t : {Q(0), Q(1, 3), Q(1)}) {
+    bool decided = true;
+    CHECK(internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(3, 10), t}, t, decided).empty());
+    CHECK(decided);
+  }
+  // v = 1/3, t = u: the trivial (t, 1/3) and the double curve's (3/5 - t, 1/3), genuine for t in [0, 3/5] but 3/10
+  F = internal::exact_line_fibre(eq, Parameter_box{}, 1, Q(1, 3), {Q(0), Q(1)});
+  REQUIRE(F.proved);
+  CHECK(components(F) == std::set<std::array<Q, 4>>{{Q(0), Q(1), Q(1, 3), Q(0)}, {Q(3, 5), Q(-1), Q(1, 3), Q(0)}});
+  bool decided = true;
+  const auto y = internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(1, 10), Q(1, 3)}, Q(1, 10), decided);
+  REQUIRE(y.size() == 1);
+  CHECK(y[0] == std::array<Q, 2>{Q(2, 5), Q(0)});  // (l, k) = (3/5 - 2u, 0)
+  CHECK(internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(3, 10), Q(1, 3)}, Q(3, 10), decided).empty());
+  CHECK(internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(7, 10), Q(1, 3)}, Q(7, 10), decided).empty());
+  // a line off D = 0 (u = 1/5): the trivial partner alone
+  F = internal::exact_line_fibre(eq, Parameter_box{}, 0, Q(1, 5), {Q(0), Q(1)});
+  REQUIRE(F.proved);
+  CHECK(components(F) == std::set<std::array<Q, 4>>{{Q(1, 5), Q(0), Q(0), Q(1)}});
+  // the plane (u, v, 0) against (s^2 + t^2, s, 0): on u = 1/2 the partners (v, s) = (s, s) with s^2 = 1/2 - t^2,
+  // a conic through the domain, not affine: refused, with the reason
+  const Patch plane = from_power({"u", "v", "0"}, 1, 1), bowl = from_power({"u^2 + v^2", "u", "0"}, 2, 2);
+  F = internal::exact_line_fibre(internal::Partner_equations(plane, bowl), Parameter_box{}, 0, Q(1, 2), {Q(0), Q(1)});
+  CHECK_FALSE(F.proved);
+  CHECK(F.reason.find("not affine") != std::string::npos);
 }
 
 // Regression: on this random bicubic pair (the first (3,3) polynomial pair of benchmark/surface_benchmark.cpp, D of

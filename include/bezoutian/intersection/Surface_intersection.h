@@ -32,6 +32,7 @@
 #include <bezoutian/lifting/partner_domain_crossings.h>
 #include <bezoutian/lifting/arc_refinement.h>
 #include <bezoutian/lifting/partner_sheets.h>
+#include <bezoutian/lifting/exact_line_fibres.h>
 #include <bezoutian/lifting/pinch_points.h>
 #include <bezoutian/lifting/polyline_distance_bounds.h>
 #include <bezoutian/elimination/Implicit_equation.h>
@@ -996,6 +997,86 @@ inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations
   }
 }
 
+// Arcs on a rational line of the parameter plane that the interval proofs leave open (a partner equation with a
+// double root along the line: a patch even about the line): the exact fibre over the line
+// (lifting/exact_line_fibres.h) decides the status of every traced point but the arc's ends, which keep their own
+// (a pinch point). An arc with no genuine partner is phantom, proved, with no sheet. Otherwise the fibre is proved
+// when the sheets hold exactly the genuine partners at every traced point but the ends (then every sheet point
+// gets the exact partner's enclosure); if they do not, the arc is left as it was.
+inline void prove_line_arc_fibres(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                                  const Time_budget* time = nullptr) {
+  if (L.topology_method != "subdivision" || o.partner_domain_unbounded) return;
+  for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+    if (time) time->check("exact line fibres");
+    Locus_arc& arc = L.arcs[k];
+    const Curve_topology_edge& e = L.topology.edges[k];
+    const std::size_t n = arc.points.size();
+    if ((arc.undecided_fraction == 0 && arc.fibre_undecided_fraction == 0) || n != e.polyline.size() || n < 3) continue;
+    const auto line = exact_line_of_arc(e, L.equation.square_free);
+    if (!line) continue;
+    const Exact_line_fibre F = exact_line_fibre(eq, o.partner_domain, line->c, line->r, line->T);
+    if (!F.proved) continue;
+    std::vector<std::vector<std::array<Rational, 2>>> genuine(n);
+    bool decided = true, any = false;
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      const Rational t(e.polyline[i][std::size_t(1 - line->c)]);
+      const std::array<Rational, 2> x = line->c == 0 ? std::array<Rational, 2>{line->r, t} : std::array<Rational, 2>{t, line->r};
+      genuine[i] = genuine_line_partners(eq, o.partner_domain, F, x, t, decided);
+      any = any || !genuine[i].empty();
+    }
+    if (!decided) continue;
+    auto enclosure = [](const std::array<Rational, 2>& y) {
+      const Double_interval a = Double_interval::of(y[0]), b = Double_interval::of(y[1]);
+      return std::array<std::array<double, 2>, 2>{{{a.lo, a.hi}, {b.lo, b.hi}}};
+    };
+    auto near = [](const std::array<double, 2>& p, const std::array<Rational, 2>& y) {
+      return std::fabs(p[0] - CGAL::to_double(y[0])) + std::fabs(p[1] - CGAL::to_double(y[1])) <= 1e-6;
+    };
+    if (any) {  // the sheets against the exact genuine partners, point by point
+      std::vector<std::size_t> matched(n, 0);
+      bool consistent = true;
+      for (const Locus_sheet& s : arc.sheets)
+        for (std::size_t j = 0; j < s.points.size() && consistent; ++j) {
+          const std::size_t i = s.first + j;
+          if (i == 0 || i + 1 >= n) continue;
+          bool found = false;
+          for (const auto& y : genuine[i]) found = found || near(s.points[j].partner, y);
+          consistent = found;
+          ++matched[i];
+        }
+      for (std::size_t i = 1; i + 1 < n && consistent; ++i) consistent = matched[i] == genuine[i].size();
+      if (!consistent) continue;
+      for (Locus_sheet& s : arc.sheets)
+        for (std::size_t j = 0; j < s.points.size(); ++j) {
+          const std::size_t i = s.first + j;
+          if (i == 0 || i + 1 >= n) continue;
+          for (const auto& y : genuine[i])
+            if (near(s.points[j].partner, y)) {
+              s.points[j].status_proved = s.points[j].genuine = true;
+              s.points[j].partner_enclosure = enclosure(y);
+            }
+        }
+    } else {
+      arc.sheets.clear();
+    }
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      // (a point lifted from another partner than its genuine ones keeps its status: its patch points are that
+      // partner's; the sheets carry the genuine ones)
+      Locus_point& q = arc.points[i];
+      if (genuine[i].empty()) {
+        q.status_proved = true;
+        q.genuine = false;
+      }
+      for (const auto& y : genuine[i])
+        if (near(q.partner, y)) {
+          q.status_proved = q.genuine = true;
+          q.partner_enclosure = enclosure(y);
+        }
+    }
+    arc.undecided_fraction = arc.fibre_undecided_fraction = 0;
+  }
+}
+
 /// A sheet's point `q` over the arc point `x` as the distance bounds read it (lifting/polyline_distance_bounds.h).
 inline Reported_sheet_point reported_sheet_point(const Locus_point& q, const std::array<double, 2>& x) {
   Reported_sheet_point r;
@@ -1497,9 +1578,10 @@ inline Surface_locus self_intersection_locus(const Rational_bezier_patch<Rationa
   budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(patch), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
-  internal::bound_sheet_polylines(L, internal::Partner_equations(patch), o, &chains, &budget);
   internal::prove_linear_partner_lines(L, internal::Partner_equations(patch), o,
                                        2 * (patch.degree_u() + patch.degree_v()));
+  internal::prove_line_arc_fibres(L, internal::Partner_equations(patch), o, &budget);
+  internal::bound_sheet_polylines(L, internal::Partner_equations(patch), o, &chains, &budget);
   internal::mark_ends_on_edge_lines(L, o, patch, nullptr);
   return L;
 }
@@ -1706,9 +1788,10 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   budget.check("certified lifting");
   internal::lift_sheets(L, internal::Partner_equations(phi, psi), o, lift_point, &chains, &budget);
   budget.check("complete lifting");
-  internal::bound_sheet_polylines(L, internal::Partner_equations(phi, psi), o, &chains, &budget);
   internal::prove_linear_partner_lines(L, internal::Partner_equations(phi, psi), o,
                                        phi.degree_u() + phi.degree_v() + psi.degree_u() + psi.degree_v());
+  internal::prove_line_arc_fibres(L, internal::Partner_equations(phi, psi), o, &budget);
+  internal::bound_sheet_polylines(L, internal::Partner_equations(phi, psi), o, &chains, &budget);
   internal::mark_ends_on_edge_lines(L, o, phi, &psi);
   if (!o.partner_domain_unbounded)
     for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)

@@ -196,8 +196,8 @@ struct Surface_locus {
   /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
   /// is also a traced point of its arc.
   std::vector<Locus_split_point> split_points;
-  /// Self-intersection: the pinch points of the patch in the box (rank-1 Jacobian: the double curve ends there,
-  /// its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
+  /// Self-intersection: the pinch points of the patch in the box (Jacobian of rank <= 1: a double curve may end
+  /// there, its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
   /// says whether every other point of the box is proved not to be one (else `pinch_points_note` says why not).
   std::vector<Pinch_point> pinch_points;
   bool pinch_points_complete = false;

@@ -9,9 +9,12 @@
 // square in (u, v, m). Every solution with |m| <= 1 in one of the charts (so every kernel direction) and (u, v)
 // in the box is found by subdivision of box x [-1, 1]: a sub-box is discarded when some G_c excludes 0 on it
 // (interval evaluation), and a solution is isolated by Krawczyk's test (MPFI, arithmetic/interval_krawczyk.h) on a
-// small box, which proves that it holds exactly one solution and that the solution is simple. The search is
-// complete when every sub-box is discarded or lies in a proved box; otherwise it says so. Points where
-// d(phi) = 0 (rank 0) make the system degenerate and stop the search as incomplete.
+// small box, which proves that it holds exactly one solution and that the solution is simple. The subdivision is
+// complete when every sub-box is discarded or lies in a proved box. A solution that is not simple (structured
+// patches: a fold v -> v^2 meeting the rank-one locus) or a point where d(phi) = 0 (rank 0) leaves a box that is
+// neither; then the rank-one points are computed exactly as the common zeros of the normal's components
+// (internal/exact_rank_one_points.h), which decides when one of their coordinates is rational. Otherwise the search
+// says that it is incomplete, and where.
 #ifndef BEZOUTIAN_LIFTING_PINCH_POINTS_H
 #define BEZOUTIAN_LIFTING_PINCH_POINTS_H
 
@@ -19,6 +22,7 @@
 #include <bezoutian/geometry/Rational_bezier_patch.h>
 #include <bezoutian/lifting/certified_lifting.h>
 #include <bezoutian/lifting/double_partner_witness.h>
+#include <bezoutian/lifting/internal/exact_rank_one_points.h>
 #include <bezoutian/arithmetic/interval_krawczyk.h>
 
 #include <array>
@@ -34,6 +38,7 @@ struct Pinch_point {
   int chart = 0;
   std::array<Rational, 2> m;
   double u = 0, v = 0;  ///< midpoint of the box
+  bool rank_zero = false;  ///< d(phi) = 0 at the point: no kernel direction (chart 0, m = [-1, 1] by convention)
 };
 
 /// All pinch points of a patch in a box, and whether the search is complete (every other point excluded).
@@ -209,8 +214,8 @@ class Pinch_system {
   std::array<std::vector<Bivariate_enclosure>, 3> Hde_, Kde_;
 };
 
-/// Finds every pinch point of `phi` in `box` (see the header comment). `max_boxes` bounds the subdivision.
-inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational>& phi, const Parameter_box& box,
+/// The subdivision search for every pinch point of `phi` in `box` (see the header comment). `max_boxes` bounds it.
+inline Pinch_point_search find_pinch_points_by_subdivision(const Rational_bezier_patch<Rational>& phi, const Parameter_box& box,
                                             std::size_t max_boxes = 600000) {
   using D = Double_interval;
   using I = Mpfi_interval;
@@ -326,6 +331,32 @@ inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational
     p.m = {f.X[2].lower(), f.X[2].upper()};
     p.u = f.X[0].mid_double();
     p.v = f.X[1].mid_double();
+    out.points.push_back(p);
+  }
+  return out;
+}
+
+/// Every pinch point of `phi` in `box`: the subdivision, and where it does not finish, the exact rank-one points
+/// (see the header comment). `max_boxes` bounds the subdivision.
+inline Pinch_point_search find_pinch_points(const Rational_bezier_patch<Rational>& phi, const Parameter_box& box,
+                                            std::size_t max_boxes = 600000) {
+  Pinch_point_search out = find_pinch_points_by_subdivision(phi, box, max_boxes);
+  if (out.complete) return out;
+  const Exact_rank_one_points exact = exact_rank_one_points(phi, box);
+  if (!exact.decided) {
+    out.reason += "; the exact route: " + exact.reason;
+    return out;
+  }
+  out = Pinch_point_search{};
+  out.complete = true;
+  for (const Exact_rank_one_point& e : exact.points) {
+    Pinch_point p;
+    p.box = {{{e.u.lower(), e.u.upper()}, {e.v.lower(), e.v.upper()}}};
+    p.chart = e.chart;
+    p.m = {e.m_lo, e.m_hi};
+    p.u = e.u.to_double();
+    p.v = e.v.to_double();
+    p.rank_zero = e.rank_zero;
     out.points.push_back(p);
   }
   return out;
