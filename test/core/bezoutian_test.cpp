@@ -407,6 +407,35 @@ TEST_CASE("Theorem 5 with Phi_0 = 1 is -(Theorem 4); Theorem 3 with unit weights
         bezoutian::self_intersection_matrix(phi, 2, 2).entries);
 }
 
+// The Bezoutian is an alternating multilinear form in the three coordinate equations (the determinant of formula (2)
+// has one row per equation, and the cross-multiplied equations of Theorems 3 and 5 are linear in the coordinates):
+// mixing the coordinates of both patches by an invertible A multiplies every entry of B by det A. So no change of
+// the 3D coordinates makes a determinant that vanishes identically nonzero, and the library tries none.
+TEST_CASE("Theorems 2-5: mixing the 3D coordinates by A multiplies B by det A", "[bezoutian]") {
+  const int A[3][3] = {{2, 1, 3}, {-1, 3, 1}, {1, -2, 4}};  // det A = 30
+  auto mixed = [&](const Patch& p) {
+    Patch q = p;
+    for (int i = 0; i < 3; ++i) {
+      q[i + 1] = Q2(0);
+      for (int j = 0; j < 3; ++j) q[i + 1] += Q2(Rational(A[i][j])) * p[j + 1];
+    }
+    return q;
+  };
+  auto scaled = [](std::vector<std::vector<Q2>> e, const Rational& c) {
+    for (auto& row : e)
+      for (auto& x : row) x *= Q2(c);
+    return e;
+  };
+  for (const bool rational : {false, true}) {
+    const Patch phi = random_patch(600 + rational, 2, 2, rational), psi = random_patch(700 + rational, 3, 2, rational);
+    const auto self = bezoutian::self_intersection_matrix(phi, 2, 2);
+    CHECK(bezoutian::self_intersection_matrix(mixed(phi), 2, 2).entries == scaled(self.entries, Rational(30)));
+    const auto pair = bezoutian::intersection_matrix(phi, 2, 2, psi, 3, 2);
+    CHECK_FALSE(pair.entries == scaled(pair.entries, Rational(30)));  // (B is not zero)
+    CHECK(bezoutian::intersection_matrix(mixed(phi), 2, 2, mixed(psi), 3, 2).entries == scaled(pair.entries, Rational(30)));
+  }
+}
+
 TEST_CASE("Theorem 5: the 4x4 determinant is exactly (k-k1)(l-l1) U B V^t", "[bezoutian][theorem5]") {
   for (auto mn : std::vector<std::pair<int, int>>{{2, 2}, {2, 1}, {1, 3}}) {
     const int m = mn.first, n = mn.second;

@@ -26,8 +26,8 @@ struct Implicit_equation {
   /// The square-free part of `determinant`, normalized the same way: the curve D = 0 without multiplicities.
   Polynomial_2<Integer> square_free;
   std::array<std::string, 2> variables;
-  /// Where D comes from: det B (possibly after mixing the coordinates), or, where det B vanishes identically, the
-  /// gcd of maximal minors of B (elimination/Maximal_minor_projection.h), whose kernel is then never a single line.
+  /// Where D comes from: det B, or, where det B vanishes identically, the gcd of maximal minors of B
+  /// (elimination/Maximal_minor_projection.h), whose kernel is then never a single line.
   enum class Route { determinant, maximal_minors };
   Route route = Route::determinant;
   /// The rank of B over Q(p0, p1), proved (Route::maximal_minors); the matrix size otherwise.
@@ -113,48 +113,25 @@ inline std::pair<int, int> actual_bidegree(const std::array<Polynomial_2<Rationa
 }
 } // namespace internal
 
-namespace internal {
-// (Phi_1, Phi_2, Phi_3) -> A (Phi_1, Phi_2, Phi_3) for an invertible integer matrix A (the `attempt`-th of a
-// fixed list). The loci are invariant under invertible linear maps of R^3, and by multilinearity the
-// resultant of A P is det(A)^e times that of P: the normalized D does not change. It removes coordinate-
-// aligned special structure (e.g. Phi_1 = u has degree 0 in v) that makes the Bezoutian determinant vanish
-// although the input is fine ("sufficiently generic" in Theorems 2-5).
-inline std::array<Polynomial_2<Rational>, 4> mixed_coordinates(const std::array<Polynomial_2<Rational>, 4>& f,
-                                                               int attempt) {
-  static const int A[3][3][3] = {{{2, 1, 3}, {-1, 3, 1}, {1, -2, 4}},
-                                 {{3, -1, 2}, {1, 4, -3}, {2, 1, 5}},
-                                 {{5, 2, -1}, {-2, 3, 4}, {1, -3, 2}}};
-  std::array<Polynomial_2<Rational>, 4> g = f;
-  for (int i = 0; i < 3; ++i) {
-    g[i + 1] = Polynomial_2<Rational>(0);
-    for (int j = 0; j < 3; ++j) g[i + 1] += Polynomial_2<Rational>(Rational(A[attempt % 3][i][j])) * f[j + 1];
-  }
-  return g;
-}
-} // namespace internal
-
 /// Implicit equation D(u,v) of the projection onto the (u,v) plane of the double-point locus of `patch`
 /// (Theorem 4 when the weights are equal, Theorem 5 otherwise): matrix of size mn - 1 for the true
-/// bi-degree (m,n) of the patch. If det B vanishes identically, the 3D coordinates are mixed by fixed
-/// invertible integer matrices (which changes D by a constant factor only) before concluding that the
-/// locus is not a curve (is_degenerate()). Patches of degree 0 in u or v: Invalid_input.
+/// bi-degree (m,n) of the patch. If det B vanishes identically the locus is not a curve of this projection
+/// (is_degenerate()); no change of the 3D coordinates can help: the Bezoutian is an alternating multilinear form
+/// in the three coordinate equations, so mixing them by an invertible matrix A multiplies every entry of B by
+/// det A. Patches of degree 0 in u or v: Invalid_input.
 inline Implicit_equation self_intersection_equation(const Rational_bezier_patch<Rational>& patch,
                                                     Bezoutian_formula formula = Bezoutian_formula::automatic) {
   const auto f = patch.power_form();
   const auto d = internal::actual_bidegree(f);
   if (d.first < 1 || d.second < 1)
     throw Invalid_input("self-intersection: the patch has degree 0 in u or v (it is a curve or a point)");
-  Implicit_equation e = internal::finish_implicit_equation(self_intersection_matrix(f, d.first, d.second, formula));
-  for (int attempt = 0; attempt < 3 && e.is_degenerate(); ++attempt)
-    e = internal::finish_implicit_equation(
-        self_intersection_matrix(internal::mixed_coordinates(f, attempt), d.first, d.second, formula));
-  return e;
+  return internal::finish_implicit_equation(self_intersection_matrix(f, d.first, d.second, formula));
 }
 
 /// Implicit equation D(u,t) of the projection onto the (u,t) plane of the intersection curve of the
 /// patches Phi(u,v) and Psi(s,t) (Theorem 2 / Theorem 3): for true bi-degrees (m1,n1) and (m2,n2) the
-/// matrix has size m2 n1 (Theorem 7 with f of degree n1 in v and g of degree m2 in s). Coordinates are
-/// mixed as for self_intersection_equation when det B vanishes identically.
+/// matrix has size m2 n1 (Theorem 7 with f of degree n1 in v and g of degree m2 in s). As for
+/// self_intersection_equation, a determinant that vanishes identically does so in every coordinate system.
 inline Implicit_equation intersection_equation(const Rational_bezier_patch<Rational>& phi,
                                                const Rational_bezier_patch<Rational>& psi,
                                                Bezoutian_formula formula = Bezoutian_formula::automatic) {
@@ -163,12 +140,7 @@ inline Implicit_equation intersection_equation(const Rational_bezier_patch<Ratio
   if (a.second < 1 || b.first < 1)
     throw Invalid_input("intersection: the first patch has degree 0 in v or the second degree 0 in s");
   const int m1 = std::max(a.first, 1), n1 = a.second, m2 = b.first, n2 = std::max(b.second, 1);
-  Implicit_equation e = internal::finish_implicit_equation(intersection_matrix(f, m1, n1, g, m2, n2, formula));
-  for (int attempt = 0; attempt < 3 && e.is_degenerate(); ++attempt)
-    e = internal::finish_implicit_equation(intersection_matrix(internal::mixed_coordinates(f, attempt), m1, n1,
-                                                               internal::mixed_coordinates(g, attempt), m2, n2,
-                                                               formula));
-  return e;
+  return internal::finish_implicit_equation(intersection_matrix(f, m1, n1, g, m2, n2, formula));
 }
 
 } // namespace bezoutian
