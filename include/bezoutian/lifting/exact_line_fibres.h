@@ -27,7 +27,7 @@
 // with no such component has no partner in the domain: phantom, proved.
 //
 // This decides the fibre of every point of the line over [t0, t1]; that the arc's traced points are points of
-// the line is the topology's (prove_line_arc in Surface_intersection.h): each graph piece runs along t with r
+// the line is the topology's (exact_line_of_arc below): each graph piece runs along t with r
 // strictly inside its cell, and a half-branch leaves its singular point's cell at a crossing on the line.
 // What it cannot do: components that are not affine in t with rational coefficients (a conic of partners) stay
 // in the cofactor, whose test then fails where they meet W; the route then reports nothing.
