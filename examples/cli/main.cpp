@@ -33,12 +33,17 @@ void start_time_limit(double seconds, const std::string& command) {
 
 int main(int argc, char** argv) {
   CLI::App app{"bezoutian: certified intersections of rational Bezier curves and patches"};
+  app.set_version_flag("--version", std::string("bezoutian ") + BEZOUTIAN_VERSION);
+  app.footer("Exit status: 0 when the command answered (whether its answer is certified is in the output), 1 for a "
+             "command line it cannot parse, 2 for input it refuses (with the reason), 3 for an internal error, 4 "
+             "when a limit (--time-limit, an input size limit) stopped it.");
   app.require_subcommand(1);
   for (auto& reg : bezoutian_cli::registry()) reg(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int status = app.exit(e);  // (prints the help, the version or what is wrong with the command line)
+    return status == 0 ? 0 : 1;
   } catch (const bezoutian::Limit_exceeded& e) {
     std::cerr << "bezoutian: error: " << e.what() << "\n";
     return bezoutian_cli::limit_exit_status;
