@@ -3,14 +3,21 @@
 
 #include <bezoutian/arithmetic/Error.h>
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <thread>
 
 namespace bezoutian_cli {
+namespace {
+bool json_errors = false;  // --json was given: errors are also printed on stdout as JSON
+}
+
 std::vector<Registration>& registry() {
   static std::vector<Registration> r;
   return r;
@@ -20,18 +27,46 @@ void start_time_limit(double seconds, const std::string& command) {
   if (!(seconds > 0)) return;
   std::thread([seconds, command] {
     std::this_thread::sleep_for(std::chrono::duration<double>(seconds + 1));
-    std::fprintf(stderr,
-                 "bezoutian: error: %s: time_limit exceeded: stopped after %g s (--time-limit %g), inside a stage that "
-                 "does not check the limit itself\n",
-                 command.c_str(), seconds + 1, seconds);
+    char message[512];
+    std::snprintf(message, sizeof message,
+                  "%s: time_limit exceeded: stopped after %g s (--time-limit %g), inside a stage that does not check "
+                  "the limit itself",
+                  command.c_str(), seconds + 1, seconds);
+    std::fprintf(stderr, "bezoutian: error: %s\n", message);
     std::fflush(stderr);
+    if (json_errors) {
+      nlohmann::json j;
+      j["error"] = {{"kind", "limit exceeded"}, {"message", message}, {"status", limit_exit_status}};
+      std::fprintf(stdout, "%s\n", j.dump(1).c_str());
+    }
     std::fflush(stdout);
     std::_Exit(limit_exit_status);
   }).detach();
 }
 } // namespace bezoutian_cli
 
+namespace {
+bool json_requested(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strcmp(argv[i], "--json") == 0) return true;
+  return false;
+}
+
+// With --json, an error is also one JSON object on stdout: {"error": {"kind": ..., "message": ..., "status": ...}}
+// (the message goes to stderr as without --json).
+int report_error(bool json, int status, const char* kind, const std::string& message) {
+  if (json) {
+    nlohmann::json j;
+    j["error"] = {{"kind", kind}, {"message", message}, {"status", status}};
+    std::cout << j.dump(1) << std::endl;
+  }
+  return status;
+}
+} // namespace
+
 int main(int argc, char** argv) {
+  const bool json = json_requested(argc, argv);
+  bezoutian_cli::json_errors = json;
   CLI::App app{"bezoutian: certified intersections of rational Bezier curves and patches"};
   app.set_version_flag("--version", std::string("bezoutian ") + BEZOUTIAN_VERSION);
   app.footer("Exit status: 0 when the command answered (whether its answer is certified is in the output), 1 for a "
@@ -43,16 +78,16 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int status = app.exit(e);  // (prints the help, the version or what is wrong with the command line)
-    return status == 0 ? 0 : 1;
+    return status == 0 ? 0 : report_error(json, 1, "command line", e.what());
   } catch (const bezoutian::Limit_exceeded& e) {
     std::cerr << "bezoutian: error: " << e.what() << "\n";
-    return bezoutian_cli::limit_exit_status;
+    return report_error(json, bezoutian_cli::limit_exit_status, "limit exceeded", e.what());
   } catch (const bezoutian::Error& e) {
     std::cerr << "bezoutian: error: " << e.what() << "\n";
-    return 2;
+    return report_error(json, 2, "input refused", e.what());
   } catch (const std::exception& e) {
     std::cerr << "bezoutian: internal error: " << e.what() << "\n";
-    return 3;
+    return report_error(json, 3, "internal error", e.what());
   }
   return 0;
 }
