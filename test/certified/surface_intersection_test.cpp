@@ -692,6 +692,18 @@ TEST_CASE("exact fibre over a line: the folded patch's lines, and a partner coni
   CHECK(y[0] == std::array<Q, 2>{Q(2, 5), Q(0)});  // (l, k) = (3/5 - 2u, 0)
   CHECK(internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(3, 10), Q(1, 3)}, Q(3, 10), decided).empty());
   CHECK(internal::genuine_line_partners(eq, Parameter_box{}, F, {Q(7, 10), Q(1, 3)}, Q(7, 10), decided).empty());
+  // where each component lies in the domain, exactly: (3/5 - t, 1/3) for t in [-2/5, 3/5], cut to the range [0, 1]
+  // and to x(t) = (t, 1/3) in the domain; (3/10, -t) on u = 3/10 only at t = 0 (where it is the trivial partner)
+  using Range = std::optional<std::array<Q, 2>>;
+  const internal::Affine_fibre_component double_curve{{Q(3, 5), Q(1, 3)}, {Q(-1), Q(0)}},
+      mirror{{Q(3, 10), Q(0)}, {Q(0), Q(-1)}};
+  CHECK(internal::component_in_domain(eq, Parameter_box{}, double_curve, 1, Q(1, 3), {Q(-1), Q(2)}) ==
+        Range(std::array<Q, 2>{Q(0), Q(3, 5)}));
+  CHECK(internal::component_in_domain(eq, Parameter_box{}, double_curve, 1, Q(1, 3), {Q(7, 10), Q(1)}) == Range());
+  CHECK(internal::component_in_domain(eq, Parameter_box{}, mirror, 0, Q(3, 10), {Q(0), Q(1, 3)}) ==
+        Range(std::array<Q, 2>{Q(0), Q(0)}));
+  CHECK(internal::component_in_domain(eq, Parameter_box{}, mirror, 0, Q(3, 10), {Q(1, 3), Q(1)}) == Range());
+  CHECK(internal::component_in_domain(eq, Parameter_box{}, mirror, 0, Q(6, 5), {Q(0), Q(1)}) == Range());  // x outside
   // a line off D = 0 (u = 1/5): the trivial partner alone
   F = internal::exact_line_fibre(eq, Parameter_box{}, 0, Q(1, 5), {Q(0), Q(1)});
   REQUIRE(F.proved);

@@ -999,8 +999,11 @@ inline void prove_linear_partner_lines(Surface_locus& L, const Partner_equations
 
 // Arcs on a rational line of the parameter plane that the interval proofs leave open (a partner equation with a
 // double root along the line: a patch even about the line): the exact fibre over the line
-// (lifting/exact_line_fibres.h) decides the status of every traced point but the arc's ends, which keep their own
-// (a pinch point). An arc with no genuine partner is phantom, proved, with no sheet. Otherwise the fibre is proved
+// (lifting/exact_line_fibres.h) decides the status of the whole arc between its end points, which keep their own
+// (a pinch point). Each nontrivial component must lie in the domain over none of the arc's range [tA, tB] (but an
+// end, or the point where it meets the trivial partner), or over all of it with both weights proved nonzero there
+// (interval evaluation); a component that enters or leaves the domain inside the arc (a split point) leaves the arc
+// as it was. An arc with no genuine component is phantom, proved, with no sheet. Otherwise the fibre is proved
 // when the sheets hold exactly the genuine partners at every traced point but the ends (then every sheet point
 // gets the exact partner's enclosure); if they do not, the arc is left as it was.
 inline void prove_line_arc_fibres(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
@@ -1016,6 +1019,44 @@ inline void prove_line_arc_fibres(Surface_locus& L, const Partner_equations& eq,
     if (!line) continue;
     const Exact_line_fibre F = exact_line_fibre(eq, o.partner_domain, line->c, line->r, line->T);
     if (!F.proved) continue;
+    // each component in the domain over none or all of the arc's range (exact: the conditions are affine in t)
+    const int g = 1 - line->c;
+    const Rational ta(e.polyline.front()[std::size_t(g)]), tb(e.polyline.back()[std::size_t(g)]);
+    const std::array<Rational, 2> range{std::min(ta, tb), std::max(ta, tb)};
+    bool settled = true;
+    for (const Affine_fibre_component& comp : F.components) {
+      // (the trivial partner of a self-intersection: w = x, i.e. w = (r, t) or (t, r))
+      const std::array<Rational, 2> trivial_a = line->c == 0 ? std::array<Rational, 2>{line->r, Rational(0)}
+                                                             : std::array<Rational, 2>{Rational(0), line->r},
+                                    trivial_b = line->c == 0 ? std::array<Rational, 2>{Rational(0), Rational(1)}
+                                                             : std::array<Rational, 2>{Rational(1), Rational(0)};
+      if (eq.self_intersection() && comp.a == trivial_a && comp.b == trivial_b) continue;
+      const auto S = component_in_domain(eq, o.partner_domain, comp, line->c, line->r, range);
+      if (!S) continue;
+      if ((*S)[0] == (*S)[1]) {  // one point: an end of the arc, or where the component is the trivial partner
+        const Rational t = (*S)[0];
+        const std::array<Rational, 2> w = comp.at(t), x = line->c == 0 ? std::array<Rational, 2>{line->r, t}
+                                                                         : std::array<Rational, 2>{t, line->r};
+        settled = settled && (t == range[0] || t == range[1] || (eq.self_intersection() && w == x));
+        continue;
+      }
+      if (!((*S)[0] == range[0] && (*S)[1] == range[1])) {
+        settled = false;
+        continue;
+      }
+      // genuine over the whole range: both weights nonzero there
+      std::array<Double_interval, 4> z;
+      const Double_interval T = Double_interval::hull(range[0], range[1]);
+      z[std::size_t(line->c)] = Double_interval::of(line->r);
+      z[std::size_t(g)] = T;
+      for (int d = 0; d < 2; ++d) {
+        const Double_interval wd = Double_interval::of(comp.a[std::size_t(d)]) + Double_interval::of(comp.b[std::size_t(d)]) * T;
+        z[std::size_t(2 + d)] = eq.self_intersection() ? wd - z[std::size_t(d)] : wd;  // y = w - x, or y = w
+      }
+      const std::array<Double_interval, 2> weights = eq.weights(z);
+      settled = settled && !weights[0].contains_zero() && !weights[1].contains_zero();
+    }
+    if (!settled) continue;
     std::vector<std::vector<std::array<Rational, 2>>> genuine(n);
     bool decided = true, any = false;
     for (std::size_t i = 1; i + 1 < n; ++i) {

@@ -321,6 +321,32 @@ inline std::optional<Line_arc> exact_line_of_arc(const Curve_topology_edge& e, c
   return std::nullopt;
 }
 
+/// The closed range of t in `range` where the component's partner coordinates lie in the rectangle W and the line's
+/// point x(t) (x_c = r) in the domain, exactly (the conditions are affine in t); empty if there is none.
+inline std::optional<std::array<Rational, 2>> component_in_domain(const Partner_equations& eq, const Parameter_box& domain,
+                                                                  const Affine_fibre_component& k, int c, const Rational& r,
+                                                                  std::array<Rational, 2> range) {
+  const std::array<Rational, 2> X_c = c == 0 ? std::array<Rational, 2>{domain.u0, domain.u1}
+                                             : std::array<Rational, 2>{domain.v0, domain.v1},
+                                X_g = c == 0 ? std::array<Rational, 2>{domain.v0, domain.v1}
+                                             : std::array<Rational, 2>{domain.u0, domain.u1};
+  if (r < X_c[0] || r > X_c[1]) return std::nullopt;
+  range = {std::max(range[0], X_g[0]), std::min(range[1], X_g[1])};
+  for (int d = 0; d < 2; ++d) {  // lo <= a + b t <= hi
+    const std::array<Rational, 2> W = partner_coordinate_range(eq, domain, d);
+    const Rational &a = k.a[std::size_t(d)], &b = k.b[std::size_t(d)];
+    if (CGAL::is_zero(b)) {
+      if (a < W[0] || a > W[1]) return std::nullopt;
+      continue;
+    }
+    Rational t0 = (W[0] - a) / b, t1 = (W[1] - a) / b;
+    if (t0 > t1) std::swap(t0, t1);
+    range = {std::max(range[0], t0), std::min(range[1], t1)};
+  }
+  if (range[0] > range[1]) return std::nullopt;
+  return range;
+}
+
 /// The genuine partners y of the point x of the line (exact): the components in the partner domain, other than
 /// the trivial partner, with nonzero weights. `decided` is false where a component in the domain has a zero
 /// weight (the equations hold without a double point there).
