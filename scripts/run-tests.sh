@@ -10,7 +10,8 @@ echo "build time: $(( $(date +%s) - start )) s"
 cd build
 ctest --output-on-failure -j"$(nproc)"
 cd ..
-# Sanitizers (doc/hostile_input.md, "Sanitizers and threads"): the thread test under ThreadSanitizer, and under
+# Sanitizers (doc/hostile_input.md, "Sanitizers and threads"): the thread tests (curves, surfaces, models) under
+# ThreadSanitizer, and under
 # AddressSanitizer + UndefinedBehaviorSanitizer the part of bezoutian_tests that covers the algebraic numbers, the
 # lazy parameters, threads, the readers, the determinant engine and curve intersection on external data (all of
 # bezoutian_tests costs about 35 CPU minutes to build: too much for CI's hour on two cores).

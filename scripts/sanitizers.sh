@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sanitizer builds of the tests, each in its own build folder (Debug-like: -O1 -g, no -DNDEBUG).
 #
-#   scripts/sanitizers.sh thread  [TEST_SPEC...]   ThreadSanitizer: test/core/thread_safety_test.cpp alone
+#   scripts/sanitizers.sh thread  [TEST_SPEC...]   ThreadSanitizer: test/core/thread_safety_test.cpp and
+#                                                  test/core/surface_thread_safety_test.cpp
 #   scripts/sanitizers.sh address [TEST_SPEC...]   AddressSanitizer + UndefinedBehaviorSanitizer: bezoutian_tests
 #                                                  (test/core, the tests without CGAL's algebraic kernels), or only
 #                                                  the files of test/core named in $BEZOUTIAN_SANITIZER_SOURCES
@@ -19,7 +20,7 @@ mode=${1:-}
 case "$mode" in
   thread)
     flags="-fsanitize=thread"
-    sources="$root/test/core/thread_safety_test.cpp"
+    sources="$root/test/core/thread_safety_test.cpp $root/test/core/surface_thread_safety_test.cpp"
     name=thread_safety_tests ;;
   address)
     flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined"

@@ -30,15 +30,6 @@ namespace bezoutian {
 namespace internal {
 struct Algebraic_real_access;
 
-/// A copy of p with a CGAL handle of its own. CGAL::Polynomial (CGAL 5.5: Handle_with_policy) counts references
-/// with a plain integer, so one handle copied or destroyed by several threads is a data race; the coefficients
-/// (CGAL::Gmpz: Handle_for) count atomically when CGAL_HAS_THREADS is defined (CGAL/config.h defines it when Boost
-/// detects threads).
-template <class NT>
-Polynomial_1<NT> unshared_copy(const Polynomial_1<NT>& p) {
-  return Polynomial_1<NT>(p.begin(), p.end());
-}
-
 /// The square-free factors (canonical, pairwise coprime) of a nonzero integer polynomial, with shared coefficient
 /// vectors: the exact data that lazily known numbers materialize from (one per eliminant, shared by its roots).
 struct Lazy_eliminant {

@@ -21,10 +21,13 @@ namespace bezoutian {
 /// (p0, p1) = (u, t) problem, with the matrix it came from.
 struct Implicit_equation {
   Bezoutian_matrix matrix;
+  // The polynomials start as zeros of their own: a default-constructed CGAL::Polynomial shares the constructing
+  // thread's default instance, whose plain reference count another thread would change when it assigns a result
+  // to an equation made here (intersect_model fills results made by the calling thread on worker threads).
   /// det B divided by its integer content, lexicographically leading term positive (0 if det B == 0).
-  Polynomial_2<Integer> determinant;
+  Polynomial_2<Integer> determinant = Polynomial_2<Integer>(0);
   /// The square-free part of `determinant`, normalized the same way: the curve D = 0 without multiplicities.
-  Polynomial_2<Integer> square_free;
+  Polynomial_2<Integer> square_free = Polynomial_2<Integer>(0);
   std::array<std::string, 2> variables;
   /// Where D comes from: det B, or, where det B vanishes identically, the gcd of maximal minors of B
   /// (elimination/Maximal_minor_projection.h), whose kernel is then never a single line.
@@ -32,6 +35,17 @@ struct Implicit_equation {
   Route route = Route::determinant;
   /// The rank of B over Q(p0, p1), proved (Route::maximal_minors); the matrix size otherwise.
   std::size_t generic_rank = 0;
+
+  Implicit_equation() = default;
+  Implicit_equation(Implicit_equation&&) = default;
+  Implicit_equation& operator=(Implicit_equation&&) = default;
+  /// A copy holds polynomials of its own (internal::unshared_copy), so that one equation, and the locus holding
+  /// it, may be copied from several threads at once.
+  Implicit_equation(const Implicit_equation& o)
+      : matrix(o.matrix), determinant(internal::unshared_copy(o.determinant)),
+        square_free(internal::unshared_copy(o.square_free)), variables(o.variables), route(o.route),
+        generic_rank(o.generic_rank) {}
+  Implicit_equation& operator=(const Implicit_equation& o) { return *this = Implicit_equation(o); }
 
   /// True if det B vanishes identically: the locus is not a curve in the (p0,p1) plane (e.g. identical or
   /// overlapping patches, or an input that is not "sufficiently generic" in the sense of Theorems 2-5).

@@ -47,6 +47,23 @@ struct Bezoutian_matrix {
   std::array<std::string, 2> monomial_variables;  ///< {"l","k"} (self-intersection) or {"s","v"} (intersection)
   Bezoutian_formula formula = Bezoutian_formula::automatic;  ///< the formula actually used (never automatic)
   std::size_t size() const { return entries.size(); }
+
+  Bezoutian_matrix() = default;
+  Bezoutian_matrix(Bezoutian_matrix&&) = default;
+  Bezoutian_matrix& operator=(Bezoutian_matrix&&) = default;
+  /// A copy holds polynomials of its own (internal::unshared_copy), so that one matrix may be copied from
+  /// several threads at once.
+  Bezoutian_matrix(const Bezoutian_matrix& o)
+      : row_monomials(o.row_monomials), column_monomials(o.column_monomials), variables(o.variables),
+        monomial_variables(o.monomial_variables), formula(o.formula) {
+    entries.reserve(o.entries.size());
+    for (const auto& row : o.entries) {
+      entries.emplace_back();
+      entries.back().reserve(row.size());
+      for (const auto& e : row) entries.back().push_back(internal::unshared_copy(e));
+    }
+  }
+  Bezoutian_matrix& operator=(const Bezoutian_matrix& o) { return *this = Bezoutian_matrix(o); }
 };
 
 namespace internal {
