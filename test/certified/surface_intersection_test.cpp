@@ -382,6 +382,64 @@ TEST_CASE("teapot: the handle and the spout cut the body along closed curves, sy
   check_closed_symmetric_curve(doc.patches, {{16, 4}, {16, 8}}, {{17, 7}, {17, 11}}, 700);  // spout base
 }
 
+TEST_CASE("an arc ending where the boundaries of both patches cross is certified up to its end",
+          "[surface][seam]") {
+  // The plane z = 0 over [-1, 0] x [-1, 1], Phi(u, v) = (u - 1, 2v - 1, 0), against the paraboloid
+  // z = x^2 + y^2 - 1/2 over [0, 1] x [-1, 1], Psi(s, t) = (s, 2t - 1, s^2 + (2t - 1)^2 - 1/2): the halves of a
+  // split plane and of a split paraboloid on either side of the seam x = 0. Phi(u, v) = Psi(s, t) iff s = u - 1,
+  // v = t and (u - 1)^2 + (2t - 1)^2 = 1/2: D = 0 is a circle whose partner s = u - 1 lies in [0, 1] only at
+  // u = 1, so every point of it in the box is phantom but its two ends on the side u = 1, (1, (1 -+ 1/sqrt 2) / 2),
+  // where both patches meet the seam: the exact boundary contacts (0, -+1/sqrt 2, 0). Near those ends the partner
+  // tends to the side s = 0 of its domain; the ends are certified crossings and the spans next to them phantom.
+  // The mirror image across the seam, the plane's right half against the paraboloid's left half, ends on u = 0
+  // with the partner on s = 1.
+  for (int mirrored = 0; mirrored < 2; ++mirrored) {
+    INFO((mirrored ? "right plane, left paraboloid" : "left plane, right paraboloid"));
+    const Patch plane = from_power({mirrored ? "u" : "u - 1", "2*v - 1", "0"}, 1, 1);
+    const Patch paraboloid =
+        mirrored ? from_power({"u - 1", "2*v - 1", "(u - 1)^2 + (2*v - 1)^2 - 1/2"}, 2, 2)
+                 : from_power({"u", "2*v - 1", "u^2 + (2*v - 1)^2 - 1/2"}, 2, 2);
+    const double end_u = mirrored ? 0 : 1, end_s = mirrored ? 1 : 0;
+    const Surface_locus L = intersection_locus(plane, paraboloid);
+    std::string why;
+    CHECK(locus_certified(L, &why));
+    INFO(why);
+    REQUIRE(L.contacts.size() == 2);
+    REQUIRE(L.split_points.size() == 2);
+    const double r = std::sqrt(0.5) / 2;
+    for (const Locus_split_point& sp : L.split_points) {
+      const Locus_arc& arc = L.arcs.at(sp.arc);
+      CHECK((sp.index == 0 || sp.index + 1 == arc.points.size()));  // an end of its arc
+      CHECK(sp.point == 1);                                            // Q = (s, t) reaches its side s = end_s
+      CHECK(sp.coordinate == 0);
+      CHECK(sp.bound == Q(int(end_s)));
+      // the box (u, t, v, s) holds (end_u, 1/2 -+ r, 1/2 -+ r, end_s)
+      const double t = sp.box[1][0] < 0.5 ? 0.5 - r : 0.5 + r;
+      const std::array<double, 4> z{end_u, t, t, end_s};
+      for (int d = 0; d < 4; ++d) {
+        CHECK(sp.box[std::size_t(d)][0] <= z[std::size_t(d)]);
+        CHECK(z[std::size_t(d)] <= sp.box[std::size_t(d)][1]);
+        CHECK(sp.box[std::size_t(d)][1] - sp.box[std::size_t(d)][0] < 1e-9);
+      }
+      const Locus_point& q = arc.points[sp.index];
+      CHECK(q.genuine);
+      CHECK(q.status_proved);
+    }
+    // every other traced point: phantom, proved (its partner s = u -+ 1 lies outside [0, 1])
+    std::size_t phantom = 0;
+    for (const Locus_arc& arc : L.arcs) {
+      CHECK(arc.undecided_fraction == 0);
+      for (const Locus_point& q : arc.points)
+        if (q.projection[0] != end_u) {
+          CHECK(q.status_proved);
+          CHECK_FALSE(q.genuine);
+          ++phantom;
+        }
+    }
+    CHECK(phantom > 10);
+  }
+}
+
 // A patch whose projection to the (x, y) plane, (u + v^2/10, v + u^2/10), is one-to-one on the unit square (its
 // Jacobian differs from the identity by less than 1 in norm, on a convex domain) cannot self-intersect. On [0,1]^2
 // D = 0 (total degree 6) misses the box; on [-2,3]^2 it does not, but the part it crosses is proved free of genuine
@@ -755,8 +813,22 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
   const Surface_locus L = intersection_locus(phi, psi);
   REQUIRE(L.topology_computed);
   REQUIRE(L.topology_method == "subdivision");
-  REQUIRE(L.split_points.size() == 1);
-  const Locus_split_point& sp = L.split_points[0];
+  // two split points: the crossing of psi's side s = 1 inside the box, and the arc's end on the side u = 0, where
+  // the curve leaves both patches at their common boundary point (0, 1/2, 1/4) (phi's side u = 0 at v = 1/2, psi's
+  // side s = 0 at t = 1/2)
+  REQUIRE(L.split_points.size() == 2);
+  const bool first_inside = L.split_points[0].bound == Q(1);
+  const Locus_split_point& sp = L.split_points[first_inside ? 0 : 1];
+  const Locus_split_point& end = L.split_points[first_inside ? 1 : 0];
+  CHECK(end.point == 1);
+  CHECK(end.coordinate == 0);
+  CHECK(end.bound == Q(0));
+  CHECK((end.index == 0 || end.index + 1 == L.arcs.at(end.arc).points.size()));
+  const std::array<double, 4> contact{0, 0.5, 0.5, 0};
+  for (int c = 0; c < 4; ++c) {
+    CHECK(end.box[c][0] <= contact[c]);
+    CHECK(contact[c] <= end.box[c][1]);
+  }
   CHECK(sp.point == 1);  // psi's point (s, t)
   CHECK(sp.coordinate == 0);
   CHECK(sp.bound == Q(1));
@@ -780,7 +852,7 @@ TEST_CASE("intersection curve leaving the second patch: the split point is certi
     CHECK(std::fabs(q.projection[0] * q.projection[0] + q.projection[1] * q.projection[1] - 0.25) < 1e-9);
     if (q.status_proved) {
       ++proved;
-      CHECK(q.genuine == (q.projection[0] < 0.25));
+      CHECK(q.genuine == (q.projection[0] < 0.25));  // (the end u = 0 too: its partner s = 0 is in the domain)
     }
   }
   CHECK(proved + 2 >= arc.points.size());

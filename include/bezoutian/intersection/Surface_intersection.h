@@ -865,6 +865,104 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
   }
 }
 
+// Arcs of D = 0 (two patches, their own domains) that end on a side of the box exactly where the partner reaches a
+// side of the partner domain: the intersection curve leaves both patches at one point, a common point of a boundary
+// curve of each (a Boundary_contact point, exact), as where the curve meets a seam of a model at a crossing of two
+// seams. With the box side u = c the partner crosses s = c' (the contact on the first patch's side u = c and the
+// second's side s = c'), with the box side t = c it crosses v = c'. The contact z* = (u*, t*, v*, s*) solves the
+// partner equations with g(z) = (partner coordinate) - c' = 0; Krawczyk's test around it (isolate_crossing) proves
+// it the only zero of F = (E, g) in a box Z holding its enclosure, with F' regular there (a transversal crossing).
+// D vanishes at (u*, t*) (a common point of the patches); when no factor of D was removed through it (no edge line
+// through it, not a corner of the box), the topology's curve does too, and the projection (u*, t*) lying in the
+// arc end's vertex box, where the vertex is the only point of that curve on the side (its isolating interval),
+// the arc ends at z*. The end becomes a Locus_split_point: its status is the
+// contact's own (genuine: both parameter points in the closed domains), and the span next to it is decided by the
+// side of the line g = 0 the partner is on (classify_span_at_split), as at a split point inside the box.
+template <class Lift>
+void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
+                                 Lift lift_point) {
+  if (L.topology_method != "subdivision" || o.partner_domain_unbounded || eq.self_intersection()) return;
+  const Parameter_box unit{Rational(0), Rational(1), Rational(0), Rational(1)};
+  auto same = [](const Parameter_box& a, const Parameter_box& b) {
+    return a.u0 == b.u0 && a.u1 == b.u1 && a.v0 == b.v0 && a.v1 == b.v1;
+  };
+  if (!same(o.box, unit) || !same(o.partner_domain, unit)) return;  // (contacts are on the patches' own sides)
+  using D = Double_interval;
+  auto enclosure = [](const Algebraic_real& a) {
+    const auto i = a.to_interval();
+    return D{i.first, i.second};
+  };
+  // a boundary point of a patch: (u, v) from the side (boundary_curve order) and the curve's parameter
+  auto on_side = [&](int side, const D& parameter, D& u, D& v) {
+    const D zero{0, 0}, one{1, 1};
+    switch (side) {
+      case 0: u = parameter, v = zero; break;
+      case 1: u = one, v = parameter; break;
+      case 2: u = parameter, v = one; break;
+      default: u = zero, v = parameter; break;
+    }
+  };
+  for (const Boundary_contact& c : L.contacts) {
+    if (c.shared_curve || c.first_0 != c.first_1) continue;
+    const bool u_fixed = c.side_first == 1 || c.side_first == 3, t_fixed = c.side_second == 0 || c.side_second == 2;
+    if (u_fixed == t_fixed) continue;  // (a box corner, or both partner coordinates on the partner's boundary)
+    D u, v, s, t;
+    on_side(c.side_first, enclosure(c.first_0), u, v);
+    on_side(c.side_second, enclosure(c.second_0), s, t);
+    // the partner side crossed there: Q's first coordinate s = 0 or 1 (box side u = c), or P's second v (t = c)
+    Partner_domain_side side;
+    side.point = u_fixed ? 1 : 0;
+    side.coordinate = u_fixed ? 0 : 1;
+    side.bound = u_fixed ? Rational(c.side_second == 1 ? 1 : 0) : Rational(c.side_first == 2 ? 1 : 0);
+    const std::array<D, 4> contact{u, t, v, s};
+    const D& free_coordinate = u_fixed ? t : u;  // (the projection's coordinate along the box side)
+    if (!(free_coordinate.lo > 0 && free_coordinate.hi < 1)) continue;  // (a corner of the box)
+    bool on_edge_line = false;
+    for (const Locus_edge_line& l : L.edge_lines) {
+      const D& x = l.side == 1 || l.side == 3 ? u : t;
+      on_edge_line = on_edge_line || (Rational(x.lo) <= l.value && l.value <= Rational(x.hi));
+    }
+    if (on_edge_line) continue;
+    for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+      Locus_arc& arc = L.arcs[k];
+      const Curve_topology_edge& e = L.topology.edges[k];
+      if (arc.points.size() < 2 || arc.points.size() != e.polyline.size()) continue;
+      for (const std::size_t j : {std::size_t(0), arc.points.size() - 1}) {
+        const Curve_topology_vertex& x = L.topology.vertices[j == 0 ? e.source : e.target];
+        if (!x.on_boundary) continue;
+        if (!(x.u_lo <= u.lo && u.hi <= x.u_hi && x.v_lo <= t.lo && t.hi <= x.v_hi)) continue;
+        bool known = false;
+        for (const Locus_split_point& sp : L.split_points) known = known || (sp.arc == k && sp.index == j);
+        if (known) continue;
+        const auto found = isolate_crossing(eq, side, {u.mid(), t.mid(), v.mid(), s.mid()});
+        if (!found) continue;
+        std::array<D, 4> Z = found->box;
+        bool holds = true;  // Z holds the contact's enclosure: the unique zero in Z is the contact
+        for (int d = 0; d < 4; ++d) holds = holds && Z[d].lo <= contact[d].lo && contact[d].hi <= Z[d].hi;
+        const auto w = eq.weights(Z);
+        if (!holds || w[0].contains_zero() || w[1].contains_zero()) continue;
+        // its box-side and partner-side coordinates are exact (the sides' values): Z keeps the zero when they are
+        // narrowed to them, and the span next to the end then holds the box's graph interval
+        Z[u_fixed ? 0 : 1] = u_fixed ? u : t;
+        Z[u_fixed ? 3 : 2] = u_fixed ? s : v;
+        const std::array<double, 2> y{v.mid(), s.mid()};
+        Locus_point q = lift_point(u.mid(), t.mid(), &y);
+        q.genuine = q.status_proved = true;
+        q.partner_enclosure = {{{Z[2].lo, Z[2].hi}, {Z[3].lo, Z[3].hi}}};
+        arc.points[j] = q;
+        Locus_split_point sp;
+        sp.arc = k;
+        sp.index = j;
+        sp.point = side.point;
+        sp.coordinate = side.coordinate;
+        sp.bound = side.bound;
+        for (int d = 0; d < 4; ++d) sp.box[std::size_t(d)] = {Z[d].lo, Z[d].hi};
+        L.split_points.push_back(sp);
+      }
+    }
+  }
+}
+
 // Proves the genuine / phantom status along the arcs of a subdivision topology (lifting/certified_lifting.h),
 // starting from the floating-point partners of the traced points; a proof overrides the floating-point flag.
 template <class Lift>
@@ -1822,6 +1920,7 @@ inline Surface_locus intersection_locus(const Rational_bezier_patch<Rational>& p
   internal::lift_arcs(L, lift_point);
   budget.check("lifting");
   internal::insert_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
+  internal::insert_contact_split_points(L, internal::Partner_equations(phi, psi), o, lift_point);
   budget.check("split points");
   // the half-branches' proved spans, from the status proof to the fibre proof
   internal::Half_branch_chains chains(o.lifting_exclusion_budget);

@@ -106,7 +106,10 @@ struct Boundary_contact {
 /// `box` holds exactly one solution (x1, x2, y1, y2) of the partner equations together with
 /// `boundary coordinate = bound`, a transversal crossing, and that solution is the point of the arc over its graph
 /// coordinate. Its traced point arc.points[index] is genuine (status proved; the partner lies on the domain's
-/// boundary, the other coordinates inside), and the floating-point statuses on its two sides differ.
+/// boundary, the other coordinates inside), and the floating-point statuses on its two sides differ. A split point
+/// may also be an end of its arc (index 0 or the last) on a side of the box, where the curve leaves both patches at
+/// a common point of their boundary curves (a Boundary_contact point, exact; as where the curve of a model crosses
+/// a seam): `box` then holds that contact.
 struct Locus_split_point {
   std::size_t arc = 0;    ///< index into Surface_locus::arcs
   std::size_t index = 0;  ///< the traced point arcs[arc].points[index]
@@ -193,8 +196,8 @@ struct Surface_locus {
   std::vector<Locus_isolated_point> isolated_points;
   /// Sides of the box that lie on D = 0 (collapsed edges, shared boundary curves); the topology is of the rest.
   std::vector<Locus_edge_line> edge_lines;
-  /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain); each
-  /// is also a traced point of its arc.
+  /// Where genuine parts of arcs end inside the box (subdivision topologies with a bounded partner domain), and
+  /// arc ends at common points of both patches' boundaries; each is also a traced point of its arc.
   std::vector<Locus_split_point> split_points;
   /// Self-intersection: the pinch points of the patch in the box (Jacobian of rank <= 1: a double curve may end
   /// there, its partner tending to the point itself), each in a box proved to hold exactly one; `pinch_points_complete`
