@@ -4,6 +4,7 @@
 // on one thread, and the genuine points against closed forms. scripts/sanitizers.sh thread runs this file under
 // ThreadSanitizer with test/core/thread_safety_test.cpp.
 #include "power_patch.h"
+#include "thread_test_support.h"
 
 #include <bezoutian/intersection/Model_intersection.h>
 
@@ -23,7 +24,7 @@ using bezoutian_test::rational_patch_from_power;
 
 namespace {
 
-constexpr int threads = 4;
+constexpr int threads = bezoutian_test::test_threads;
 
 // Catch2's assertions are not thread-safe: the threads record what differs, the main thread reports it.
 struct Differences {
@@ -39,18 +40,7 @@ struct Differences {
   }
 };
 
-template <class F>
-void run_on_threads(F body) {
-  std::atomic<int> ready{0};
-  std::vector<std::thread> pool;
-  for (int k = 0; k < threads; ++k)
-    pool.emplace_back([&, k] {
-      ++ready;
-      while (ready.load() < threads) std::this_thread::yield();
-      body(k);
-    });
-  for (auto& t : pool) t.join();
-}
+using bezoutian_test::run_on_threads;
 
 bool same_doubles(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 

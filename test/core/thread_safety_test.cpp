@@ -2,6 +2,8 @@
 // threads, and one shared result (lazy parameters made exact on demand, exact parameters sharing a defining
 // polynomial) read, refined and compared from four threads at once. Answers are checked against closed forms
 // and against the single-thread results. scripts/sanitizers.sh thread runs this file under ThreadSanitizer.
+#include "thread_test_support.h"
+
 #include <bezoutian/intersection/Curve_intersection.h>
 #include <bezoutian/geometry/Curve_problem_generator.h>
 #include <bezoutian/algebraic/Root_isolation.h>
@@ -20,7 +22,7 @@ using namespace bezoutian;
 
 namespace {
 
-constexpr int threads = 4;
+constexpr int threads = bezoutian_test::test_threads;
 
 // Catch2's assertions are not thread-safe: the threads record failed expectations, the main thread reports them.
 struct Failures {
@@ -40,19 +42,7 @@ struct Failures {
     if (!(cond)) (F).add(#cond, __LINE__); \
   } while (0)
 
-// Runs body(k) on `threads` threads, k = 0..threads-1, released together.
-template <class F>
-void run_on_threads(F body) {
-  std::atomic<int> ready{0};
-  std::vector<std::thread> pool;
-  for (int k = 0; k < threads; ++k)
-    pool.emplace_back([&, k] {
-      ++ready;
-      while (ready.load() < threads) std::this_thread::yield();
-      body(k);
-    });
-  for (auto& t : pool) t.join();
-}
+using bezoutian_test::run_on_threads;
 
 // The power-basis polynomial a_0 + a_1 x + ... as a Bezier graph (x(t) = t, y(t) = that polynomial) of degree n:
 // b_i = sum_{j <= i} C(i, j) / C(n, j) a_j.
