@@ -22,13 +22,17 @@ inline std::string object_label(const std::string& kind, std::size_t i, const st
   return kind + " " + std::to_string(i) + (name.empty() ? "" : " ('" + name + "')");
 }
 
-inline Loaded_file load_and_validate(const std::string& path) {
+/// `patch_poles_are_errors` false: a patch with a pole is kept (the model command reports it per patch, see
+/// bezoutian::model_problems); curves are checked all the same.
+inline Loaded_file load_and_validate(const std::string& path, bool patch_poles_are_errors = true) {
   Loaded_file f{bezoutian::io::read_geometry_file(path), {}};
   auto check = [&](const auto& object, const std::string& label) {
     try {
       bezoutian::check_no_pole(object);
     } catch (const bezoutian::Invalid_input& e) {
-      throw bezoutian::Invalid_input(path + ": " + label + ": " + e.what());
+      if (patch_poles_are_errors || label.compare(0, 5, "patch") != 0)
+        throw bezoutian::Invalid_input(path + ": " + label + ": " + e.what());
+      return;
     }
     for (const std::string& w : bezoutian::degeneracy_warnings(object)) f.warnings.push_back(label + ": " + w);
   };

@@ -1,14 +1,16 @@
 // bezoutian model FILE: every intersection of a model (bezoutian::intersect_model): the pairs of patches whose
-// control-point boxes meet and every patch's self-intersection, on several threads, as a summary (text) or with
-// every locus (JSON).
+// control-point boxes meet and every patch's self-intersection, on several threads or on MPI ranks
+// (examples/cli/model_mpi.h), as a summary (text) or with every locus (JSON), and the curves of the model.
 #include "commands.h"
 #include "load.h"
-#include "locus_json.h"
+#include "model_mpi.h"
 
+#include <bezoutian/intersection/Model_curves.h>
 #include <bezoutian/intersection/Model_intersection.h>
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -30,41 +32,29 @@ struct Model_options {
   bool json = false;
 };
 
-// What a problem found, in counts: arcs with genuine points, shared boundary curves, contact points, isolated
-// contacts, overlap regions, and whether all of it is proved (bezoutian::locus_certified).
-struct Problem_summary {
-  std::size_t genuine_arcs = 0, shared_boundaries = 0, contact_points = 0, touching_points = 0, overlaps = 0,
-              genuine_edge_lines = 0;
-  bool certified = false;
-  std::string reason;
-};
-
-Problem_summary summary(const bezoutian::Model_problem& p) {
-  Problem_summary s;
-  if (!p.computed) {
-    s.reason = p.error;
-    return s;
-  }
-  const auto& L = p.locus;
-  for (const auto& a : L.arcs) {
-    bool genuine = false;
-    for (const auto& q : a.points) genuine = genuine || q.genuine;
-    s.genuine_arcs += genuine;
-  }
-  for (const auto& c : L.contacts) (c.shared_curve ? s.shared_boundaries : s.contact_points) += 1;
-  for (const auto& ip : L.isolated_points) s.touching_points += ip.genuine();
-  for (const auto& e : L.edge_lines) s.genuine_edge_lines += e.genuine;
-  s.overlaps = L.overlaps.size();
-  s.certified = bezoutian::locus_certified(L, &s.reason);
-  return s;
-}
-
 std::string problem_name(const bezoutian::Model_problem& p) {
   return p.self() ? "self " + std::to_string(p.first) : "pair " + std::to_string(p.first) + " " + std::to_string(p.second);
 }
 
+nlohmann::json curve_json(const bezoutian::Model_intersection& R, const bezoutian::Model_curve& c) {
+  nlohmann::json pieces = nlohmann::json::array();
+  for (const auto& p : c.pieces) {
+    const auto& mp = R.problems[p.problem];
+    pieces.push_back({{"problem", p.problem},
+                      {"patches", {mp.first, mp.second}},
+                      {"arc", p.arc},
+                      {"sheet", p.sheet},
+                      {"reversed", p.reversed}});
+  }
+  return {{"closed", c.closed},
+          {"pieces_certified", c.pieces_certified},
+          {"largest_gap", c.largest_gap},
+          {"pieces", pieces},
+          {"points", bezoutian::model_curve_points(R, c)}};
+}
+
 void run_model(const Model_options& o) {
-  Loaded_file f = load_and_validate(o.file);
+  Loaded_file f = load_and_validate(o.file, false);  // (a patch with a pole: its problems are reported, see below)
   if (f.doc.patches.empty())
     throw bezoutian::Invalid_input(o.file + ": expected patches (a model), found none (" +
                                    std::to_string(f.doc.curves_2.size() + f.doc.curves_3.size()) + " curve(s))");
@@ -84,12 +74,25 @@ void run_model(const Model_options& o) {
       std::fprintf(stderr, "\rproblems done: %zu of %zu", done, total);
       if (done == total) std::fprintf(stderr, "\n");
     };
-  const bezoutian::Model_intersection R = bezoutian::intersect_model(f.doc.patches, mo);
-  std::size_t certified = 0, failed = 0;
+  bezoutian::Model_intersection R;
   std::vector<Problem_summary> sums;
+  std::string where;
+  int ranks = 1;
+  if (launched_as_mpi_ranks()) {
+    R = bezoutian::model_problems(f.doc.patches, mo);
+    const auto start = std::chrono::steady_clock::now();
+    if (!solve_on_mpi_ranks(f.doc.patches, mo.surface, o.json, R, sums, ranks, mo.progress)) return;  // (a worker)
+    R.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    where = std::to_string(ranks) + " MPI rank(s)";
+  } else {
+    R = bezoutian::intersect_model(f.doc.patches, mo);
+    for (const auto& p : R.problems) sums.push_back(summarize(p, o.json));
+    where = std::to_string(R.threads_used) + " thread(s)";
+  }
+  const std::vector<bezoutian::Model_curve> curves = bezoutian::chain_model_curves(R);
+  std::size_t certified = 0, failed = 0;
   for (const auto& p : R.problems) {
-    sums.push_back(summary(p));
-    certified += sums.back().certified;
+    certified += p.certified;
     failed += !p.computed;
   }
   if (o.json) {
@@ -98,6 +101,7 @@ void run_model(const Model_options& o) {
     j["pairs"] = R.pairs;
     j["pairs_with_meeting_boxes"] = R.pairs_with_meeting_boxes;
     j["threads"] = R.threads_used;
+    j["mpi_ranks"] = ranks;
     j["seconds"] = R.seconds;
     j["problems_certified"] = certified;
     nlohmann::json problems = nlohmann::json::array();
@@ -105,22 +109,25 @@ void run_model(const Model_options& o) {
       const auto& p = R.problems[k];
       const auto& s = sums[k];
       nlohmann::json jp{{"patches", {p.first, p.second}},    {"self", p.self()},
-                        {"computed", p.computed},             {"certified", s.certified},
+                        {"computed", p.computed},             {"certified", p.certified},
                         {"genuine_arcs", s.genuine_arcs},     {"shared_boundaries", s.shared_boundaries},
                         {"contact_points", s.contact_points}, {"touching_points", s.touching_points},
                         {"overlaps", s.overlaps},             {"genuine_edge_lines", s.genuine_edge_lines},
                         {"seconds", p.seconds}};
-      if (!s.certified) jp["reason"] = s.reason;
-      if (p.computed) jp["locus"] = locus_json(p.locus, p.seconds);
+      if (!p.certified) jp["reason"] = p.reason;
+      if (p.computed) jp["locus"] = s.locus;
       problems.push_back(jp);
     }
     j["problems"] = problems;
+    nlohmann::json jc = nlohmann::json::array();
+    for (const auto& c : curves) jc.push_back(curve_json(R, c));
+    j["curves"] = jc;
     std::cout << j.dump(1) << "\n";
     return;
   }
   std::cout << R.patches << " patches; " << R.pairs_with_meeting_boxes << " of " << R.pairs
             << " pairs with meeting control-point boxes" << (o.no_self ? "" : ", and every self-intersection") << "; "
-            << R.problems.size() << " problems on " << R.threads_used << " thread(s) in " << R.seconds << " s\n";
+            << R.problems.size() << " problems on " << where << " in " << R.seconds << " s\n";
   for (std::size_t k = 0; k < R.problems.size(); ++k) {
     const auto& p = R.problems[k];
     const auto& s = sums[k];
@@ -133,7 +140,20 @@ void run_model(const Model_options& o) {
               << s.contact_points << " boundary contact point(s), " << s.touching_points << " touching point(s)";
     if (s.overlaps) std::cout << ", " << s.overlaps << " overlap region(s)";
     if (s.genuine_edge_lines) std::cout << ", " << s.genuine_edge_lines << " genuine edge line(s)";
-    std::cout << (s.certified ? "; certified" : "; not certified: " + s.reason) << " (" << p.seconds << " s)\n";
+    std::cout << (p.certified ? "; certified" : "; not certified: " + p.reason) << " (" << p.seconds << " s)\n";
+  }
+  std::size_t closed = 0;
+  for (const auto& c : curves) closed += c.closed;
+  std::cout << curves.size() << " curve(s) of the model, " << closed << " closed (branches joined across seams):\n";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    const auto& c = curves[k];
+    std::cout << "curve " << k << ": " << (c.closed ? "closed" : "open") << ", " << c.pieces.size() << " piece(s):";
+    for (const auto& p : c.pieces)
+      std::cout << " " << problem_name(R.problems[p.problem]) << " arc " << p.arc << " sheet " << p.sheet
+                << (p.reversed ? " reversed" : "") << ";";
+    std::cout << (c.pieces_certified ? " every piece certified" : " not every piece certified");
+    if (c.pieces.size() > 1 || c.closed) std::cout << ", largest gap at a link " << c.largest_gap;
+    std::cout << "\n";
   }
   std::cout << certified << " of " << R.problems.size() << " problems certified";
   if (failed) std::cout << ", " << failed << " not computed";
@@ -143,9 +163,12 @@ void run_model(const Model_options& o) {
 Register model_registration([](CLI::App& app) {
   auto o = std::make_shared<Model_options>();
   auto* sub = app.add_subcommand("model", "Every intersection of a model: the pairs of patches whose boxes meet and "
-                                          "every self-intersection, on several threads");
+                                          "every self-intersection, on several threads or MPI ranks, and the curves "
+                                          "of the model joined across its seams");
   sub->add_option("FILE", o->file, "model file (.bpt or .json with several patches)")->required();
-  sub->add_option("--threads", o->threads, "worker threads (default 0: one per core)");
+  sub->add_option("--threads", o->threads,
+                  "worker threads (default 0: one per core); under mpirun -n K the K - 1 ranks other than rank 0 "
+                  "solve one problem at a time each, and rank 0 hands them out");
   sub->add_option("--problem-time-limit", o->problem_time_limit,
                   "budget of each problem in seconds; a problem over it is reported as not computed, with the stage "
                   "(default 0: none)");

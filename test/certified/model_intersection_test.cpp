@@ -1,14 +1,17 @@
 // Whole-model intersection (intersection/Model_intersection.h) on the Utah teapot of ../shared/data: the broad
 // phase against the shared boundaries listed in teapot32_topology.txt (computed independently from the control
 // nets), and the model's results against the single-pair functions and across thread counts.
+#include "power_patch.h"
 #include "test_support.h"
 
+#include <bezoutian/intersection/Model_curves.h>
 #include <bezoutian/intersection/Model_intersection.h>
 #include <bezoutian/io/Geometry_document.h>
 
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -164,4 +167,116 @@ TEST_CASE("model: a problem over its budget is reported, the others go on", "[mo
     CHECK(R.problems[k].computed);
     CHECK(locus_certified(R.problems[k].locus));
   }
+}
+
+TEST_CASE("model curves: a circle cut by the seams of a split plane and a split paraboloid is one closed curve",
+          "[model][curves]") {
+  // The plane z = 0 and the paraboloid z = x^2 + y^2 - 1/2, each split at x = 0 into two patches glued along it:
+  // they meet in the circle x^2 + y^2 = 1/2, z = 0, whose left half is a branch of (plane left, paraboloid left)
+  // and whose right half one of (plane right, paraboloid right). The halves meet at (0, +-1/sqrt 2, 0) on the
+  // seams; the cross pairs (plane left, paraboloid right) touch there only.
+  using bezoutian_test::patch_from_power;
+  const std::vector<Rational_bezier_patch<Rational>> patches{
+      patch_from_power({"u - 1", "2*v - 1", "0"}, 1, 1), patch_from_power({"u", "2*v - 1", "0"}, 1, 1),
+      patch_from_power({"u - 1", "2*v - 1", "(u - 1)^2 + (2*v - 1)^2 - 1/2"}, 2, 2),
+      patch_from_power({"u", "2*v - 1", "u^2 + (2*v - 1)^2 - 1/2"}, 2, 2)};
+  const Model_intersection R = intersect_model(patches);
+  const std::vector<Model_curve> curves = chain_model_curves(R);
+  REQUIRE(curves.size() == 1);
+  const Model_curve& c = curves[0];
+  CHECK(c.closed);
+  REQUIRE(c.pieces.size() == 2);
+  const Model_problem &a = R.problems[c.pieces[0].problem], &b = R.problems[c.pieces[1].problem];
+  CHECK(std::make_pair(a.first, a.second) == std::make_pair(std::size_t(0), std::size_t(2)));
+  CHECK(std::make_pair(b.first, b.second) == std::make_pair(std::size_t(1), std::size_t(3)));
+  // both pieces' problems are certified, so each piece is a proved branch: the curve is all of the circle
+  CHECK(c.pieces_certified);
+  CHECK(c.largest_gap <= 1e-12);
+  // the points go once around the circle, in steps of the polyline tolerance's order
+  const auto points = model_curve_points(R, c);
+  double largest_step = 0, turn = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const auto& p = points[k];
+    CHECK(p[0] * p[0] + p[1] * p[1] == Approx(0.5).margin(1e-9));
+    CHECK(std::fabs(p[2]) <= 1e-9);
+    const auto& q = points[(k + 1) % points.size()];
+    largest_step = std::max(largest_step, std::hypot(q[0] - p[0], q[1] - p[1]));
+    turn += std::remainder(std::atan2(q[1], q[0]) - std::atan2(p[1], p[0]), 2 * M_PI);
+  }
+  CHECK(largest_step < 0.1);
+  CHECK(std::fabs(std::fabs(turn) - 2 * M_PI) < 1e-9);
+  // the links are at the seam points (0, +-1/sqrt 2, 0)
+  const auto& first_sheet = a.locus.arcs[c.pieces[0].arc].sheets[c.pieces[0].sheet];
+  for (const auto& end : {first_sheet.points.front(), first_sheet.points.back()}) {
+    CHECK(std::fabs(end.point_3d[0]) <= 1e-12);
+    CHECK(std::fabs(std::fabs(end.point_3d[1]) - std::sqrt(0.5)) <= 1e-12);
+  }
+}
+
+TEST_CASE("model curves: the handle's upper end cuts the body in one closed curve across both seams",
+          "[model][curves][teapot]") {
+  // Handle halves 12, 13 (mirror images in y = 0) and body sectors 5, 6 (mirror images, their seam in y = 0): the
+  // curve where the handle's upper end enters the body has one branch on (5, 12) and one on (6, 13), joined at
+  // the two points where the handle's seam crosses the body's (both in y = 0).
+  const auto all = teapot();
+  const std::vector<Rational_bezier_patch<Rational>> patches{all[5], all[6], all[12], all[13]};
+  Model_intersection_options o;
+  o.self_intersections = false;
+  const Model_intersection R = intersect_model(patches, o);
+  const std::vector<Model_curve> curves = chain_model_curves(R);
+  REQUIRE(curves.size() == 1);
+  const Model_curve& c = curves[0];
+  CHECK(c.closed);
+  REQUIRE(c.pieces.size() == 2);
+  std::set<std::pair<std::size_t, std::size_t>> pairs;
+  for (const auto& p : c.pieces) pairs.insert({R.problems[p.problem].first, R.problems[p.problem].second});
+  CHECK(pairs == std::set<std::pair<std::size_t, std::size_t>>{{0, 2}, {1, 3}});
+  // symmetric about y = 0: each point's mirror image lies near the curve's polyline (within its chord error)
+  const auto points = model_curve_points(R, c);
+  CHECK(points.size() > 200);
+  std::size_t on_seam = 0;
+  for (const auto& p : points) {
+    double best = 1e300;
+    for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+      const auto &x = points[k], &y = points[k + 1];
+      std::array<double, 3> d{y[0] - x[0], y[1] - x[1], y[2] - x[2]}, m{p[0] - x[0], -p[1] - x[1], p[2] - x[2]};
+      const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      const double t = dd > 0 ? std::min(1.0, std::max(0.0, (m[0] * d[0] + m[1] * d[1] + m[2] * d[2]) / dd)) : 0;
+      best = std::min(best, std::hypot(m[0] - t * d[0], m[1] - t * d[1], m[2] - t * d[2]));
+    }
+    CHECK(best < 2e-3);
+    on_seam += std::fabs(p[1]) < 1e-12;
+  }
+  CHECK(on_seam == 2);  // the two links, each point once
+}
+
+TEST_CASE("model: a patch with a pole is refused with its reason, the rest of the model is answered", "[model]") {
+  // examples/data/model_with_bad_patches.json: the split circle model, a patch whose weight u - 1/2 vanishes inside
+  // its domain (patch 4), and a patch collapsed to a segment (patch 5)
+  const auto patches =
+      io::read_geometry_file(std::string(BEZOUTIAN_SOURCE_DIR) + "/examples/data/model_with_bad_patches.json").patches;
+  REQUIRE(patches.size() == 6);
+  const Model_intersection R = intersect_model(patches);
+  REQUIRE(R.patch_errors.size() == 6);
+  for (std::size_t k = 0; k < 6; ++k) CHECK(R.patch_errors[k].empty() == (k != 4));
+  CHECK(R.patch_errors[4].find("patch 4 is refused: pole in the patch domain") != std::string::npos);
+  std::size_t with_pole = 0;
+  for (const Model_problem& p : R.problems) {
+    INFO("problem " << p.first << ", " << p.second << ": " << p.error);
+    if (p.first == 4 || p.second == 4) {
+      // the patch has no control-point box (weights of both signs), so it is paired with every other patch
+      ++with_pole;
+      CHECK_FALSE(p.computed);
+      CHECK(p.error == R.patch_errors[4]);
+    } else if (p.first != 5 && p.second != 5) {
+      CHECK(p.computed);
+      CHECK(p.certified == (p.computed && locus_certified(p.locus)));
+    }
+  }
+  CHECK(with_pole == 6);
+  // the good patches' circle is still one closed curve of two certified pieces
+  const auto curves = chain_model_curves(R);
+  std::size_t closed = 0;
+  for (const auto& c : curves) closed += c.closed && c.pieces.size() == 2 && c.pieces_certified;
+  CHECK(closed == 1);
 }

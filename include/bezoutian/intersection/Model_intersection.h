@@ -11,18 +11,19 @@
 //
 // Parallel runs. The problems (pairs in increasing (i, j), then the self-intersections in increasing i) are taken
 // from a shared counter by the worker threads; each result is written to its own slot, so the output does not
-// depend on the number of threads or on the order in which problems finish. Independent problems are meant to share
-// no mutable state (doc/hostile_input.md, "What is thread-safe"); ThreadSanitizer has checked that for curve
-// problems, not yet for surface problems, where the test compares one and two threads result by result. Each
-// problem has its own budget
+// depend on the number of threads or on the order in which problems finish. Independent problems share no mutable
+// state (doc/hostile_input.md, "What is thread-safe"; test/core/surface_thread_safety_test.cpp runs surface problems
+// and this function on four threads under ThreadSanitizer). Each problem has its own budget
 // (Surface_intersection_options::limits); a problem that ends in an Error (a budget exceeded, input the single-pair
-// functions refuse) is reported with that error's text, and the others go on.
+// functions refuse) is reported with that error's text, and the others go on. The curves of the model, joined
+// across its seams, are in intersection/Model_curves.h.
 #ifndef BEZOUTIAN_INTERSECTION_MODEL_INTERSECTION_H
 #define BEZOUTIAN_INTERSECTION_MODEL_INTERSECTION_H
 
 #include <bezoutian/arithmetic/double_interval.h>
 #include <bezoutian/arithmetic/Error.h>
 #include <bezoutian/geometry/Rational_bezier_patch.h>
+#include <bezoutian/geometry/Weight_validity.h>
 #include <bezoutian/intersection/Surface_intersection.h>
 
 #include <CGAL/box_intersection_d.h>
@@ -63,6 +64,10 @@ struct Model_problem {
   bool computed = false;
   std::string error;
   Surface_locus locus;
+  /// locus_certified(locus): everything the locus reports is proved; otherwise `reason` says what is not (or, if
+  /// not computed, the error)
+  bool certified = false;
+  std::string reason;
   double seconds = 0;
 };
 
@@ -73,6 +78,9 @@ struct Model_intersection {
   std::size_t pairs = 0, pairs_with_meeting_boxes = 0;
   /// The problems in a fixed order: the pairs by increasing (first, second), then the self-intersections.
   std::vector<Model_problem> problems;
+  /// Per patch, why it is refused (a weight that vanishes in its domain: check_no_pole), or empty. The problems of
+  /// a refused patch are listed, not computed, with this reason; the others are solved as usual.
+  std::vector<std::string> patch_errors;
   unsigned threads_used = 1;
   double seconds = 0;
 };
@@ -123,6 +131,62 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_with_meeting_boxes
 
 }  // namespace internal
 
+/// \brief The problems of a model, not yet solved: the pairs of patches whose control-point boxes meet, by
+/// increasing (first, second), then (if `o.self_intersections`) every patch's self-intersection. A patch whose
+/// weight vanishes in its domain (a pole; proved by check_no_pole) is refused: its problems are listed with the
+/// reason in `error` and are not solved (such a patch has no control-point box, so it is paired with every other
+/// patch: none of its intersections is known). intersect_model
+/// solves them; a caller that hands them out itself (several processes, say) solves each with
+/// solve_model_problem and gets the same results.
+inline Model_intersection model_problems(const std::vector<Rational_bezier_patch<Rational>>& patches,
+                                         const Model_intersection_options& o = {}) {
+  Model_intersection out;
+  out.patches = patches.size();
+  out.pairs = patches.size() * (patches.size() - (patches.empty() ? 0 : 1)) / 2;
+  out.patch_errors.assign(patches.size(), std::string());
+  for (std::size_t k = 0; k < patches.size(); ++k) {
+    try {
+      check_no_pole(patches[k]);
+    } catch (const Error& e) {
+      out.patch_errors[k] = "patch " + std::to_string(k) + " is refused: " + e.what();
+    }
+  }
+  auto add = [&](std::size_t first, std::size_t second) {
+    Model_problem p;
+    p.first = first;
+    p.second = second;
+    for (std::size_t k : {first, second})
+      if (p.error.empty() && !out.patch_errors[k].empty()) p.error = p.reason = out.patch_errors[k];
+    out.problems.push_back(std::move(p));
+  };
+  for (const auto& pr : internal::pairs_with_meeting_boxes(patches)) add(pr.first, pr.second);
+  out.pairs_with_meeting_boxes = out.problems.size();
+  if (o.self_intersections)
+    for (std::size_t k = 0; k < patches.size(); ++k) add(k, k);
+  return out;
+}
+
+/// \brief Solves one problem of model_problems: its locus (intersection_locus or self_intersection_locus with
+/// `o`), whether it is certified, its time; an Error that ends it (its budget exceeded, input the single-pair
+/// functions refuse) is caught and kept in `p.error`, as is any other exception (an internal error). A problem
+/// that model_problems refused (its `error` set: a refused patch) is left as it is.
+inline void solve_model_problem(const std::vector<Rational_bezier_patch<Rational>>& patches, Model_problem& p,
+                                const Surface_intersection_options& o) {
+  if (!p.error.empty()) return;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    p.locus = p.self() ? self_intersection_locus(patches[p.first], o)
+                       : intersection_locus(patches[p.first], patches[p.second], o);
+    p.computed = true;
+    p.certified = locus_certified(p.locus, &p.reason);
+  } catch (const Error& e) {
+    p.error = p.reason = e.what();
+  } catch (const std::exception& e) {  // (not the library's own: out of memory, an exception of CGAL's)
+    p.error = p.reason = std::string("internal error: ") + e.what();
+  }
+  p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 /// \brief Every intersection of a model: the loci of the pairs of patches whose control-point boxes meet and (by
 /// default) every patch's self-intersection locus, computed on `threads` worker threads. Each locus is the one
 /// intersection_locus / self_intersection_locus return for that problem (with `o.surface`), whatever the number of
@@ -130,22 +194,7 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_with_meeting_boxes
 inline Model_intersection intersect_model(const std::vector<Rational_bezier_patch<Rational>>& patches,
                                           const Model_intersection_options& o = {}) {
   const auto start = std::chrono::steady_clock::now();
-  Model_intersection out;
-  out.patches = patches.size();
-  out.pairs = patches.size() * (patches.size() - (patches.empty() ? 0 : 1)) / 2;
-  for (const auto& pr : internal::pairs_with_meeting_boxes(patches)) {
-    Model_problem p;
-    p.first = pr.first;
-    p.second = pr.second;
-    out.problems.push_back(std::move(p));
-  }
-  out.pairs_with_meeting_boxes = out.problems.size();
-  if (o.self_intersections)
-    for (std::size_t k = 0; k < patches.size(); ++k) {
-      Model_problem p;
-      p.first = p.second = k;
-      out.problems.push_back(std::move(p));
-    }
+  Model_intersection out = model_problems(patches, o);
   unsigned threads = o.threads ? o.threads : std::max(1u, std::thread::hardware_concurrency());
   threads = unsigned(std::max<std::size_t>(1, std::min<std::size_t>(threads, out.problems.size())));
   out.threads_used = threads;
@@ -154,18 +203,7 @@ inline Model_intersection intersect_model(const std::vector<Rational_bezier_patc
   std::mutex progress_lock;
   auto work = [&]() {
     for (std::size_t k; (k = next.fetch_add(1)) < out.problems.size();) {
-      Model_problem& p = out.problems[k];
-      const auto t0 = std::chrono::steady_clock::now();
-      try {
-        p.locus = p.self() ? self_intersection_locus(patches[p.first], o.surface)
-                           : intersection_locus(patches[p.first], patches[p.second], o.surface);
-        p.computed = true;
-      } catch (const Error& e) {
-        p.error = e.what();
-      } catch (const std::exception& e) {  // (not the library's own: out of memory, an exception of CGAL's)
-        p.error = std::string("internal error: ") + e.what();
-      }
-      p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      solve_model_problem(patches, out.problems[k], o.surface);
       if (o.progress) {
         std::lock_guard<std::mutex> lock(progress_lock);
         o.progress(++done, out.problems.size());
