@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "load.h"
 #include "model_mpi.h"
+#include "model_pictures.h"
 
 #include <bezoutian/intersection/Model_curves.h>
 #include <bezoutian/intersection/Model_intersection.h>
@@ -30,6 +31,7 @@ struct Model_options {
   double polyline_tolerance = 1e-3;
   bool no_self = false;
   bool json = false;
+  std::string obj, svg_dir;
 };
 
 std::string problem_name(const bezoutian::Model_problem& p) {
@@ -90,6 +92,8 @@ void run_model(const Model_options& o) {
     where = std::to_string(R.threads_used) + " thread(s)";
   }
   const std::vector<bezoutian::Model_curve> curves = bezoutian::chain_model_curves(R);
+  if (!o.obj.empty()) write_model_obj(o.obj, f.doc.patches, R, curves);
+  if (!o.svg_dir.empty()) write_model_svgs(o.svg_dir, R);
   std::size_t certified = 0, failed = 0;
   for (const auto& p : R.problems) {
     certified += p.certified;
@@ -176,6 +180,11 @@ Register model_registration([](CLI::App& app) {
                   "chord error of the lifted polylines, in 3D and in the parameter domains (default 1e-3)");
   sub->add_flag("--no-self", o->no_self, "skip the self-intersections");
   sub->add_flag("--json", o->json, "machine-readable output, with every locus");
+  sub->add_option("--obj", o->obj,
+                  "write an OBJ file: the patch meshes, every branch grouped by pair of patches, the model's curves");
+  sub->add_option("--svg-dir", o->svg_dir,
+                  "write DIR/patch_K.svg for each patch with curves: its parameter square and the curves on it")
+      ->check(CLI::ExistingDirectory);
   sub->callback([o] { run_model(*o); });
 });
 
