@@ -872,10 +872,11 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
 // second's side s = c'), with the box side t = c it crosses v = c'. The contact z* = (u*, t*, v*, s*) solves the
 // partner equations with g(z) = (partner coordinate) - c' = 0; Krawczyk's test around it (isolate_crossing) proves
 // it the only zero of F = (E, g) in a box Z holding its enclosure, with F' regular there (a transversal crossing).
-// D vanishes at (u*, t*) (a common point of the patches); when no factor of D was removed through it (no edge line
-// through it, not a corner of the box), the topology's curve does too, and the projection (u*, t*) lying in the
-// arc end's vertex box, where the vertex is the only point of that curve on the side (its isolating interval),
-// the arc ends at z*. The end becomes a Locus_split_point: its status is the
+// D vanishes at (u*, t*) (a common point of the patches), and so does the topology's curve when no factor of D was
+// removed through it (no edge line through it, not a corner of the box). The arc's end vertex is a root of that
+// curve on the side too; when the square-free D restricted to the side has exactly one root in the hull of the
+// vertex box and the contact's enclosure (counted exactly), the two are that root: the arc ends at z*. The end
+// becomes a Locus_split_point: its status is the
 // contact's own (genuine: both parameter points in the closed domains), and the span next to it is decided by the
 // side of the line g = 0 the partner is on (classify_span_at_split), as at a split point inside the box.
 template <class Lift>
@@ -923,6 +924,24 @@ void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, 
       on_edge_line = on_edge_line || (Rational(x.lo) <= l.value && l.value <= Rational(x.hi));
     }
     if (on_edge_line) continue;
+    // the square-free D on the box side through the contact: u = u* (a polynomial in t) or t = t* (in u)
+    const Rational side_value = u_fixed ? Rational(c.side_first == 1 ? 1 : 0) : Rational(c.side_second == 2 ? 1 : 0);
+    const Polynomial_2<Integer>& Dsf = L.equation.square_free;
+    std::vector<Rational> coefficients;
+    for (int j = 0; j <= Dsf.degree(); ++j) {
+      const Polynomial_1<Integer>& Dj = Dsf[j];
+      if (u_fixed) {  // D_j(u*), the coefficient of t^j
+        Rational value(0);
+        for (int i = Dj.degree(); i >= 0; --i) value = value * side_value + Rational(Dj[i]);
+        coefficients.push_back(value);
+      } else {  // sum_j D_j(u) t*^j
+        Rational power(1);
+        for (int l = 0; l < j; ++l) power *= side_value;
+        if (coefficients.size() < std::size_t(Dj.degree() + 1)) coefficients.resize(std::size_t(Dj.degree() + 1), Rational(0));
+        for (int i = 0; i <= Dj.degree(); ++i) coefficients[std::size_t(i)] += Rational(Dj[i]) * power;
+      }
+    }
+    const Polynomial_1<Rational> on_side_line(coefficients.begin(), coefficients.end());
     for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
       Locus_arc& arc = L.arcs[k];
       const Curve_topology_edge& e = L.topology.edges[k];
@@ -931,6 +950,11 @@ void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, 
         const Curve_topology_vertex& x = L.topology.vertices[j == 0 ? e.source : e.target];
         if (!x.on_boundary) continue;
         if (!(x.u_lo <= u.lo && u.hi <= x.u_hi && x.v_lo <= t.lo && t.hi <= x.v_hi)) continue;
+        const D along = u_fixed ? D{std::min(x.v_lo, t.lo), std::max(x.v_hi, t.hi)}
+                                : D{std::min(x.u_lo, u.lo), std::max(x.u_hi, u.hi)};
+        if (!(!CGAL::is_zero(on_side_line) &&
+              count_real_roots(on_side_line, Rational(along.lo), Rational(along.hi)) == 1))
+          continue;
         bool known = false;
         for (const Locus_split_point& sp : L.split_points) known = known || (sp.arc == k && sp.index == j);
         if (known) continue;
