@@ -4,6 +4,7 @@
 set -euo pipefail
 packages=(g++ cmake make ccache libcgal-dev libgmp-dev libmpfr-dev libmpfi-dev libboost-dev
           catch2 nlohmann-json3-dev libcli11-dev doxygen
+          python3-jsonschema  # validates the --json output against its schema (ctest cli_json_output)
           libopenmpi-dev openmpi-bin  # MPI: `mpirun -n K bezoutian model`, not used by the library
           libflint-dev  # FLINT: compared against in benchmark/, not used by the library
           libcgal-demo)  # libcgal-demo: CGAL's Bezier.dat (examples.tar.gz), compared against in the tests

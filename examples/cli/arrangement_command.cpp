@@ -1,6 +1,7 @@
 // bezoutian arrangement FILE [--json] [--svg OUT.svg]: the arrangement of the planar curves of a file
 // (our JSON or CGAL's Bezier .dat), computed by CGAL::Arrangement_2 with Arr_rational_bezier_traits_2.
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 
 #include <bezoutian/Arr_rational_bezier_traits_2.h>
@@ -67,14 +68,14 @@ void run_arrangement(const std::string& path, bool json, const std::string& svg)
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!svg.empty()) write_svg(arr, svg);
   if (json) {
-    nlohmann::json j;
+    nlohmann::json j = bezoutian_cli::envelope("arrangement");
     j["curves"] = f.doc.curves_2.size();
     j["vertices"] = arr.number_of_vertices();
     j["edges"] = arr.number_of_edges();
     j["faces"] = arr.number_of_faces();
     j["isolated_vertices"] = arr.number_of_isolated_vertices();
     j["valid"] = valid;
-    j["milliseconds"] = ms;
+    j["seconds"] = ms / 1000;
     j["warnings"] = f.warnings;
     std::cout << j.dump(2) << "\n";
     return;

@@ -34,9 +34,9 @@ Curves load_curves(const std::string& path) {
 
 using bezoutian_cli::exact;
 using bezoutian_cli::exact_or_decimal;
-using bezoutian_cli::interval;
+using bezoutian_cli::algebraic;
 
-// Point C(s) to 20 significant digits: C evaluated exactly at a rational within 2^-200 of s (the printed digits are
+// Point C(s) to 30 significant digits: C evaluated exactly at a rational within 2^-200 of s (the printed digits are
 // an approximation, the parameters are the exact answer).
 template <class Curve>
 nlohmann::json point(const Curve& c, const Algebraic_real& s) {
@@ -50,7 +50,7 @@ nlohmann::json point(const Curve& c, const Algebraic_real& s) {
     x = s.lower();
   }
   nlohmann::json p = nlohmann::json::array();
-  for (const Rational& v : c(x)) p.push_back(Algebraic_real(v).to_decimal_string(20));
+  for (const Rational& v : c(x)) p.push_back(Algebraic_real(v).to_decimal_string(bezoutian_cli::algebraic_digits));
   return p;
 }
 
@@ -58,18 +58,15 @@ template <class Curve>
 void report(const Curve& a, const Curve& b, const bezoutian::Curve_intersection_result& r, const std::string& method,
             double seconds, bool json) {
   if (json) {
-    nlohmann::json j;
+    nlohmann::json j = bezoutian_cli::envelope("intersect");
+    j["problem"] = "curve/curve";
     j["method"] = method;
     j["dimension"] = Curve::dimension;
     nlohmann::json pts = nlohmann::json::array();
     for (const auto& p : r.points) {
       nlohmann::json q;
-      q["s"] = p.s.to_decimal_string(30);
-      q["t"] = p.t.to_decimal_string(30);
-      q["s_interval"] = interval(p.s);
-      q["t_interval"] = interval(p.t);
-      q["s_rational"] = p.s.is_rational();
-      q["t_rational"] = p.t.is_rational();
+      q["s"] = algebraic(p.s);
+      q["t"] = algebraic(p.t);
       q["point"] = point(a, p.s);
       q["multiplicity"] = p.multiplicity;
       q["kind"] = bezoutian::to_string(p.kind);
@@ -79,8 +76,7 @@ void report(const Curve& a, const Curve& b, const bezoutian::Curve_intersection_
     j["intersections"] = pts;
     nlohmann::json ov = nlohmann::json::array();
     for (const auto& o : r.overlaps)
-      ov.push_back({{"s", {exact_or_decimal(o.s0), exact_or_decimal(o.s1)}},
-                    {"t", {exact_or_decimal(o.t0), exact_or_decimal(o.t1)}}});
+      ov.push_back({{"s", {algebraic(o.s0), algebraic(o.s1)}}, {"t", {algebraic(o.t0), algebraic(o.t1)}}});
     j["overlaps"] = ov;
     j["seconds"] = seconds;
     std::cout << j.dump(1) << "\n";

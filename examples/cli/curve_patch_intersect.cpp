@@ -22,9 +22,10 @@ using bezoutian::Rational;
 
 using bezoutian_cli::exact;
 using bezoutian_cli::exact_or_decimal;
-using bezoutian_cli::interval;
+using bezoutian_cli::algebraic;
+using bezoutian_cli::envelope;
 
-// C(r) to 20 significant digits: C evaluated exactly at a rational within 2^-200 of r.
+// C(r) to 30 significant digits: C evaluated exactly at a rational within 2^-200 of r.
 std::vector<std::string> point(const bezoutian::Rational_bezier_curve_3<>& c, const Algebraic_real& r) {
   Rational x;
   if (r.is_rational()) {
@@ -36,7 +37,7 @@ std::vector<std::string> point(const bezoutian::Rational_bezier_curve_3<>& c, co
     x = r.lower();
   }
   std::vector<std::string> p;
-  for (const Rational& v : c(x)) p.push_back(Algebraic_real(v).to_decimal_string(20));
+  for (const Rational& v : c(x)) p.push_back(Algebraic_real(v).to_decimal_string(bezoutian_cli::algebraic_digits));
   return p;
 }
 
@@ -66,19 +67,15 @@ void run_curve_patch_intersect(const Intersect_options& o) {
       bezoutian::intersect_curve_patch(c, patches.front(), intersection_limits(o));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.json) {
-    nlohmann::json j;
+    nlohmann::json j = envelope("intersect");
+    j["problem"] = "curve/patch";
     j["method"] = "default";
-    j["object_b"] = "patch";
     nlohmann::json pts = nlohmann::json::array();
     for (const auto& p : r.points) {
       nlohmann::json q;
-      q["s"] = p.r.to_decimal_string(30);
-      q["u"] = p.u.to_decimal_string(30);
-      q["v"] = p.v.to_decimal_string(30);
-      q["s_interval"] = interval(p.r);
-      q["u_interval"] = interval(p.u);
-      q["v_interval"] = interval(p.v);
-      q["s_rational"] = p.r.is_rational();
+      q["s"] = algebraic(p.r);  // the curve's parameter
+      q["u"] = algebraic(p.u);
+      q["v"] = algebraic(p.v);
       q["point"] = point(c, p.r);
       q["multiplicity"] = p.multiplicity;
       q["kind"] = bezoutian::to_string(p.kind);
@@ -89,7 +86,7 @@ void run_curve_patch_intersect(const Intersect_options& o) {
     }
     j["intersections"] = pts;
     nlohmann::json ov = nlohmann::json::array();
-    for (const auto& v : r.overlaps) ov.push_back({{"s", {exact_or_decimal(v.r0), exact_or_decimal(v.r1)}}});
+    for (const auto& v : r.overlaps) ov.push_back({{"s", {algebraic(v.r0), algebraic(v.r1)}}});
     j["overlaps"] = ov;
     j["seconds"] = seconds;
     std::cout << j.dump(1) << "\n";

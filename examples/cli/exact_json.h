@@ -1,28 +1,128 @@
-// JSON forms of exact numbers shared by the intersection commands: rationals as "p/q" strings, algebraic numbers as
-// their exact isolating interval (or the rational itself) and as 30-digit decimals.
+// The JSON forms shared by every command (doc/json_schema.md, schema doc/bezoutian-output.schema.json):
+// - exact rationals as "p/q" (or "p") strings;
+// - algebraic numbers exactly: the rational value, or the defining polynomial and an isolating interval with
+//   rational ends, plus a decimal of algebraic_digits significant digits;
+// - floating-point approximations (traced points, drawings) as the shortest decimal string that reads back to the
+//   same double;
+// - proved floating-point enclosures as decimal strings of enclosure_digits significant digits rounded outward, so
+//   that the printed interval still holds what the double interval holds.
+// Counts, indices, degrees, multiplicities and the measured "seconds" are the only JSON numbers.
 #ifndef BEZOUTIAN_CLI_EXACT_JSON_H
 #define BEZOUTIAN_CLI_EXACT_JSON_H
 
 #include <bezoutian/algebraic/Algebraic_real.h>
+#include <bezoutian/algebraic/internal/bernstein_descartes_support.h>
 #include <bezoutian/io/Exact_number.h>
+
+#include "json_envelope.h"
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <sstream>
 #include <string>
 
 namespace bezoutian_cli {
 
+/// Significant digits of the decimals of algebraic numbers and of the points computed from them.
+constexpr int algebraic_digits = 30;
+/// Significant digits of outward-rounded enclosures.
+constexpr int enclosure_digits = 17;
+
 inline std::string exact(const bezoutian::Rational& q) { return bezoutian::io::to_exact_string(q); }
 
-/// An exact end: the rational itself, or (irrational) the 30-digit decimal.
-inline std::string exact_or_decimal(const bezoutian::Algebraic_real& a) {
-  return a.is_rational() ? exact(a.rational_value()) : a.to_decimal_string(30);
+inline std::string exact(const bezoutian::Integer& z) {
+  std::ostringstream s;
+  s << z;
+  return s.str();
 }
 
-/// The isolating interval as a pair of exact rationals (both ends equal for a rational number).
-inline nlohmann::json interval(const bezoutian::Algebraic_real& a) {
-  if (a.is_rational()) return {exact(a.rational_value()), exact(a.rational_value())};
-  return {exact(a.lower()), exact(a.upper())};
+/// A double as the shortest decimal string that reads back to it; null when it is not finite (not computed).
+inline nlohmann::json approx(double x) {
+  if (!std::isfinite(x)) return nullptr;
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, r.ptr);
+}
+
+template <std::size_t N>
+nlohmann::json approx(const std::array<double, N>& p) {
+  nlohmann::json a = nlohmann::json::array();
+  for (double x : p) a.push_back(approx(x));
+  return a;
+}
+
+namespace internal {
+// q rounded to enclosure_digits significant digits, up (toward +infinity) or down, as a decimal string.
+inline std::string directed_decimal(const bezoutian::Rational& q, bool up) {
+  using bezoutian::Rational;
+  if (CGAL::is_zero(q)) return "0";
+  const bool negative = q < Rational(0);
+  const Rational a = CGAL::abs(q);
+  const auto rounded = bezoutian::internal::round_to_significant(a, enclosure_digits);  // nearest: (E, digits)
+  const long e = rounded.first - (enclosure_digits - 1);                                // the last digit's place
+  Rational unit(1);
+  for (long k = 0; k < std::labs(e); ++k) unit = e > 0 ? unit * 10 : unit / 10;
+  Rational v = Rational(bezoutian::Integer(rounded.second)) * unit;
+  const bool away = up != negative;  // rounding |q| away from zero
+  if (away && v < a) v = v + unit;
+  if (!away && v > a) v = v - unit;
+  std::string s = CGAL::is_zero(v) ? std::string("0")
+                                   : bezoutian::internal::rational_to_decimal_string(v, enclosure_digits + 1);
+  // the digits are exact: drop the trailing zeros of the fraction
+  const std::size_t e_at = s.find('e'), end = e_at == std::string::npos ? s.size() : e_at;
+  std::string mantissa = s.substr(0, end), exponent = s.substr(end);
+  if (mantissa.find('.') != std::string::npos) {
+    while (mantissa.back() == '0') mantissa.pop_back();
+    if (mantissa.back() == '.') mantissa.pop_back();
+  }
+  return (negative && s != "0" ? "-" : "") + mantissa + exponent;
+}
+}  // namespace internal
+
+/// A proved enclosure [lo, hi] of doubles as two decimal strings rounded outward; null when not finite.
+inline nlohmann::json enclosure(double lo, double hi) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return nullptr;
+  return {internal::directed_decimal(bezoutian::Rational(lo), false),
+          internal::directed_decimal(bezoutian::Rational(hi), true)};
+}
+
+/// A proved upper bound as a decimal string rounded up; null when not finite (not proved).
+inline nlohmann::json upper_bound(double x) {
+  if (!std::isfinite(x)) return nullptr;
+  return internal::directed_decimal(bezoutian::Rational(x), true);
+}
+
+/// An exact interval [lo, hi] with rational ends.
+inline nlohmann::json exact_interval(const bezoutian::Rational& lo, const bezoutian::Rational& hi) {
+  return {exact(lo), exact(hi)};
+}
+
+/// An algebraic number exactly: {"decimal", "rational"} for a rational, {"decimal", "polynomial", "interval"}
+/// otherwise (the defining square-free integer polynomial, coefficients from degree 0 up, and an interval with
+/// rational ends that holds no other of its roots); "interval" is [q, q] for a rational q.
+inline nlohmann::json algebraic(const bezoutian::Algebraic_real& a) {
+  nlohmann::json j;
+  j["decimal"] = a.to_decimal_string(algebraic_digits);
+  if (a.is_rational()) {
+    const std::string q = exact(a.rational_value());
+    j["rational"] = q;
+    j["interval"] = {q, q};
+    return j;
+  }
+  nlohmann::json poly = nlohmann::json::array();
+  const auto f = a.polynomial();
+  for (int i = 0; i <= f.degree(); ++i) poly.push_back(exact(f[i]));
+  j["polynomial"] = poly;
+  j["interval"] = exact_interval(a.lower(), a.upper());
+  return j;
+}
+
+/// An exact end for text output: the rational itself, or (irrational) the decimal.
+inline std::string exact_or_decimal(const bezoutian::Algebraic_real& a) {
+  return a.is_rational() ? exact(a.rational_value()) : a.to_decimal_string(algebraic_digits);
 }
 
 } // namespace bezoutian_cli

@@ -1,6 +1,7 @@
 // bezoutian implicit self FILE | bezoutian implicit intersect FILE_A FILE_B:
 // the matrix size and the implicit equation D of the projected (self-)intersection locus.
 #include "commands.h"
+#include "implicit_json.h"
 #include "load.h"
 
 #include <bezoutian/elimination/Implicit_equation.h>
@@ -27,25 +28,10 @@ Patch single_patch(const std::string& path, std::size_t index) {
   return f.doc.patches[index];
 }
 
-std::string integer_text(const bezoutian::Integer& z) {
-  std::ostringstream s;
-  s << z;
-  return s.str();
-}
-
 void print(const Implicit_equation& e, double seconds, bool json) {
   if (json) {
-    nlohmann::json j;
-    j["matrix_size"] = e.matrix.size();
-    j["variables"] = {e.variables[0], e.variables[1]};
-    j["formula"] = e.matrix.formula == bezoutian::Bezoutian_formula::rational ? "rational" : "polynomial";
-    j["identically_zero"] = e.is_degenerate();
-    j["bidegree"] = {e.degree(0), e.degree(1)};
-    j["total_degree"] = e.total_degree();
-    nlohmann::json terms = nlohmann::json::array();
-    for (const auto& t : e.terms()) terms.push_back({std::get<0>(t), std::get<1>(t), integer_text(std::get<2>(t))});
-    j["terms"] = terms;
-    j["square_free"] = e.square_free == e.determinant;
+    nlohmann::json j = bezoutian_cli::envelope("implicit");
+    j["implicit"] = bezoutian_cli::implicit_json(e);
     j["seconds"] = seconds;
     std::cout << j.dump(1) << "\n";
     return;

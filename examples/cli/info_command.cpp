@@ -1,5 +1,6 @@
 // bezoutian info FILE: what a file holds.
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 
 #include <nlohmann/json.hpp>
@@ -39,7 +40,7 @@ void run_info(const std::string& path, bool json) {
     f.warnings.push_back("the file also holds " + std::to_string(d.curves_2.size() + d.curves_3.size()) +
                          " curves, not counted here");
   if (json) {
-    nlohmann::json j;
+    nlohmann::json j = bezoutian_cli::envelope("info");
     j["kind"] = kind;
     j["count"] = count;
     j["degrees"] = degrees;

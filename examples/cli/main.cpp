@@ -1,5 +1,6 @@
 // bezoutian: command-line front end of the Bezoutian library.
 #include "commands.h"
+#include "json_envelope.h"
 
 #include <bezoutian/arithmetic/Error.h>
 
@@ -16,6 +17,15 @@
 namespace bezoutian_cli {
 namespace {
 bool json_errors = false;  // --json was given: errors are also printed on stdout as JSON
+std::string json_command;  // the subcommand named on the command line ("" if none)
+
+// An error as the JSON document of doc/json_schema.md: the envelope and {"error": {"kind", "message", "status"}}.
+std::string error_json(const char* kind, const std::string& message, int status) {
+  nlohmann::json j = envelope(json_command);
+  if (json_command.empty()) j["command"] = nullptr;
+  j["error"] = {{"kind", kind}, {"message", message}, {"status", status}};
+  return j.dump(1);
+}
 }
 
 std::vector<Registration>& registry() {
@@ -34,11 +44,7 @@ void start_time_limit(double seconds, const std::string& command) {
                   command.c_str(), seconds + 1, seconds);
     std::fprintf(stderr, "bezoutian: error: %s\n", message);
     std::fflush(stderr);
-    if (json_errors) {
-      nlohmann::json j;
-      j["error"] = {{"kind", "limit exceeded"}, {"message", message}, {"status", limit_exit_status}};
-      std::fprintf(stdout, "%s\n", j.dump(1).c_str());
-    }
+    if (json_errors) std::fprintf(stdout, "%s\n", error_json("limit exceeded", message, limit_exit_status).c_str());
     std::fflush(stdout);
     std::_Exit(limit_exit_status);
   }).detach();
@@ -52,14 +58,18 @@ bool json_requested(int argc, char** argv) {
   return false;
 }
 
-// With --json, an error is also one JSON object on stdout: {"error": {"kind": ..., "message": ..., "status": ...}}
-// (the message goes to stderr as without --json).
+// The first argument that names a subcommand of `app`.
+std::string command_named(int argc, char** argv, CLI::App& app) {
+  for (int i = 1; i < argc; ++i)
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+      if (sub->get_name() == argv[i]) return sub->get_name();
+  return "";
+}
+
+// With --json, an error is also one JSON document on stdout, {"error": {"kind": ..., "message": ..., "status": ...}}
+// with the envelope of every output (the message goes to stderr as without --json).
 int report_error(bool json, int status, const char* kind, const std::string& message) {
-  if (json) {
-    nlohmann::json j;
-    j["error"] = {{"kind", kind}, {"message", message}, {"status", status}};
-    std::cout << j.dump(1) << std::endl;
-  }
+  if (json) std::cout << bezoutian_cli::error_json(kind, message, status) << std::endl;
   return status;
 }
 } // namespace
@@ -74,6 +84,7 @@ int main(int argc, char** argv) {
              "when a limit (--time-limit, an input size limit) stopped it.");
   app.require_subcommand(1);
   for (auto& reg : bezoutian_cli::registry()) reg(app);
+  bezoutian_cli::json_command = command_named(argc, argv, app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

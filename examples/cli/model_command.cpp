@@ -2,6 +2,7 @@
 // control-point boxes meet and every patch's self-intersection, on several threads or on MPI ranks
 // (examples/cli/model_mpi.h), as a summary (text) or with every locus (JSON), and the curves of the model.
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 #include "model_mpi.h"
 #include "model_pictures.h"
@@ -48,11 +49,13 @@ nlohmann::json curve_json(const bezoutian::Model_intersection& R, const bezoutia
                       {"sheet", p.sheet},
                       {"reversed", p.reversed}});
   }
+  nlohmann::json points = nlohmann::json::array();
+  for (const auto& q : bezoutian::model_curve_points(R, c)) points.push_back(approx(q));
   return {{"closed", c.closed},
           {"pieces_certified", c.pieces_certified},
-          {"largest_gap", c.largest_gap},
+          {"largest_gap", approx(c.largest_gap)},
           {"pieces", pieces},
-          {"points", bezoutian::model_curve_points(R, c)}};
+          {"points_3d", points}};
 }
 
 void run_model(const Model_options& o) {
@@ -100,7 +103,7 @@ void run_model(const Model_options& o) {
     failed += !p.computed;
   }
   if (o.json) {
-    nlohmann::json j;
+    nlohmann::json j = envelope("model");
     j["patches"] = R.patches;
     j["pairs"] = R.pairs;
     j["pairs_with_meeting_boxes"] = R.pairs_with_meeting_boxes;
@@ -119,6 +122,7 @@ void run_model(const Model_options& o) {
                         {"overlaps", s.overlaps},             {"genuine_edge_lines", s.genuine_edge_lines},
                         {"seconds", p.seconds}};
       if (!p.certified) jp["reason"] = p.reason;
+      if (!p.computed) jp["error"] = p.error;
       if (p.computed) jp["locus"] = s.locus;
       problems.push_back(jp);
     }

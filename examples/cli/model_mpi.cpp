@@ -32,7 +32,7 @@ Problem_summary summarize(const bezoutian::Model_problem& p, bool with_locus) {
   for (const auto& ip : L.isolated_points) s.touching_points += ip.genuine();
   for (const auto& e : L.edge_lines) s.genuine_edge_lines += e.genuine;
   s.overlaps = L.overlaps.size();
-  if (with_locus) s.locus = locus_json(L, p.seconds);
+  if (with_locus) s.locus = locus_json(L);
   return s;
 }
 

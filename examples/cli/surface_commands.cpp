@@ -1,6 +1,7 @@
 // bezoutian self-intersect FILE and bezoutian intersect PATCH_A PATCH_B: the locus with its certified topology,
 // lifted to the partner parameters, as text, JSON, SVG and OBJ.
 #include "commands.h"
+#include "exact_json.h"
 #include "load.h"
 #include "locus_json.h"
 
@@ -33,16 +34,6 @@
 
 namespace bezoutian_cli {
 namespace {
-
-std::string exact_or_decimal(const bezoutian::Algebraic_real& x) {
-  return x.is_rational() ? bezoutian::io::to_exact_string(x.rational_value()) : x.to_decimal_string(17);
-}
-
-// "tangent", "singular" (a patch's normal vanishes), "transversal" or "undecided" (an irrational partner)
-std::string contact_kind(const bezoutian::Isolated_point_partners::Partner& p) {
-  if (!p.tangency_decided) return "undecided";
-  return p.singular ? "singular" : p.tangent ? "tangent" : "transversal";
-}
 
 std::string isolated_point_text(const bezoutian::Locus_isolated_point& ip) {
   const auto& x = ip.lift;
@@ -87,228 +78,6 @@ Patch patch_of(const std::string& path, std::size_t index) {
   for (const auto& w : f.warnings)
     if (w.compare(0, label.size(), label) == 0) std::cerr << "warning: " << w << "\n";
   return f.doc.patches[index];
-}
-
-std::string text(const bezoutian::Integer& z) {
-  std::ostringstream s;
-  s << z;
-  return s.str();
-}
-
-std::string text(const bezoutian::Rational& q) {
-  const bezoutian::Integer d = q.denominator();
-  return d == 1 ? text(q.numerator()) : text(q.numerator()) + "/" + text(d);
-}
-
-nlohmann::json to_json(const bezoutian::Surface_locus& L, double seconds) {
-  using nlohmann::json;
-  json j;
-  j["equation_computed"] = L.equation_computed;  // false: answered by a direct proof, without elimination
-  j["matrix_size"] = L.equation.matrix.size();
-  // where D comes from: "determinant" (det B) or "maximal_minors" (det B = 0; the gcd of maximal minors of rank r)
-  j["elimination_route"] =
-      L.equation.route == bezoutian::Implicit_equation::Route::maximal_minors ? "maximal_minors" : "determinant";
-  j["matrix_generic_rank"] = L.equation.generic_rank;
-  json terms = json::array();
-  for (const auto& t : L.equation.terms()) terms.push_back({std::get<0>(t), std::get<1>(t), text(std::get<2>(t))});
-  j["implicit"] = {{"variables", {L.equation.variables[0], L.equation.variables[1]}},
-                   {"bidegree", {L.equation.degree(0), L.equation.degree(1)}},
-                   {"total_degree", L.equation.total_degree()},
-                   {"terms", terms}};
-  const auto& T = L.topology;
-  j["topology_computed"] = L.topology_computed;
-  if (L.topology_computed) j["topology_method"] = L.topology_method.empty() ? "empty locus" : L.topology_method;
-  if (!L.note.empty()) j["note"] = L.note;
-  j["box"] = {CGAL::to_double(T.box.u0), CGAL::to_double(T.box.u1), CGAL::to_double(T.box.v0), CGAL::to_double(T.box.v1)};
-  json comps = json::array();
-  for (const auto& c : T.components) {
-    json jc;
-    jc["closed"] = c.closed;
-    jc["isolated_point"] = c.isolated_point;
-    json pts = json::array(), partner = json::array(), p3 = json::array(), genuine = json::array(), arcs = json::array(),
-         proved = json::array(), enclosures = json::array();
-    for (std::size_t ei : c.edges) {
-      const auto& arc = L.arcs[ei];
-      // every branch of the space curve over the arc: one sheet per partner (the genuine runs), with its points
-      json sheets = json::array();
-      for (const auto& sh : arc.sheets) {
-        json sp = json::array(), s3 = json::array(), sproved = json::array();
-        for (const auto& q : sh.points) {
-          sp.push_back({q.partner[0], q.partner[1]});
-          s3.push_back({q.point_3d[0], q.point_3d[1], q.point_3d[2]});
-          sproved.push_back(q.status_proved);
-        }
-        // per segment: proved bounds [first domain, second domain, space] on its distance from the curve (null: not
-        // proved)
-        json bounds = json::array();
-        for (const auto& b : sh.segment_distance_bounds)
-          bounds.push_back(std::isfinite(b[0]) ? json{b[0], b[1], b[2]} : json(nullptr));
-        sheets.push_back({{"first", pts.size() + sh.first}, {"partner_points", sp}, {"points_3d", s3},
-                          {"genuine_proved", sproved}, {"segment_distance_bounds", bounds}});
-      }
-      arcs.push_back({{"from", pts.size()},
-                      {"count", arc.points.size()},
-                      {"undecided_fraction", arc.undecided_fraction},
-                      {"sheets", sheets},
-                      {"fibre_undecided_fraction", arc.fibre_undecided_fraction}});
-      for (const auto& q : arc.points) {
-        pts.push_back({q.projection[0], q.projection[1]});
-        partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
-        p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
-        genuine.push_back(q.genuine);
-        proved.push_back(q.status_proved);
-        const auto& y = q.partner_enclosure;
-        enclosures.push_back(std::isfinite(y[0][0]) ? json{{y[0][0], y[0][1]}, {y[1][0], y[1][1]}} : json(nullptr));
-      }
-    }
-    if (c.isolated_point && !c.vertices.empty()) {
-      const auto& v = T.vertices[c.vertices[0]];
-      pts.push_back({v.u, v.v});
-    }
-    jc["points"] = pts;
-    jc["arcs"] = arcs;
-    jc["partner_points"] = partner;
-    jc["points_3d"] = p3;
-    jc["genuine"] = genuine;
-    jc["genuine_proved"] = proved;  // the genuine flag above is proved (true) or floating point only (false)
-    // proved genuine points: a box in partner coordinates proved to hold the partner of the exact arc point
-    jc["partner_enclosures"] = enclosures;
-    comps.push_back(jc);
-  }
-  j["components"] = comps;
-  // sides of the box on D = 0 (collapsed edges, shared boundary curves): not part of the components above
-  json edges = json::array();
-  static const char* causes[] = {"unexplained", "collapsed_edge", "shared_boundary_curve", "outside_partner_domain",
-                                 "partner_iso_curve", "collapsed_point_off_partner", "curve_off_partner"};
-  for (const auto& e : L.edge_lines) {
-    json pts = json::array(), partner = json::array(), p3 = json::array();
-    for (const auto& q : e.points) {
-      pts.push_back({q.projection[0], q.projection[1]});
-      partner.push_back(q.lifted ? json{q.partner[0], q.partner[1]} : json(nullptr));
-      p3.push_back(q.lifted ? json{q.point_3d[0], q.point_3d[1], q.point_3d[2]} : json(nullptr));
-    }
-    edges.push_back({{"side", e.side},
-                     {"interior", e.interior},
-                     {"line", std::string(e.side % 2 == 1 ? "u" : (L.self_intersection ? "v" : "t")) + " = " + text(e.value)},
-                     {"cause", causes[int(e.cause)]},
-                     {"partner_side", e.partner_side},
-                     {"genuine", e.genuine},
-                     {"genuine_proved", e.status_proved},
-                     {"description", e.description},
-                     {"points", pts},
-                     {"partner_points", partner},
-                     {"points_3d", p3}});
-  }
-  j["edge_lines"] = edges;
-  json sing = json::array(), bnd = json::array();
-  for (const auto& v : T.vertices) {
-    json jv = {{"u", v.u}, {"v", v.v}, {"u_interval", {v.u_lo, v.u_hi}}, {"v_interval", {v.v_lo, v.v_hi}},
-               {"branches", v.branches}};
-    // a contact with the domain edge from outside (or a domain corner that D = 0 passes from outside) is an
-    // isolated point of the locus in the domain, but D = 0 is smooth there: a boundary point, not a singular one
-    if ((v.kind == bezoutian::Curve_topology_vertex::singular || v.kind == bezoutian::Curve_topology_vertex::isolated) &&
-        !v.on_boundary) {
-      jv["isolated"] = v.kind == bezoutian::Curve_topology_vertex::isolated;
-      sing.push_back(jv);
-    }
-    if (v.on_boundary) {
-      jv["tangent_to_boundary"] = v.tangent_to_boundary;  // the curve touches the edge here (from inside: 2 arcs)
-      jv["singular"] = v.singular_on_boundary;  // D = 0 is singular here (a corner: cusp or node; branches into the box)
-      bnd.push_back(jv);
-    }
-  }
-  j["singular_points"] = sing;
-  j["boundary_points"] = bnd;
-  // regions proved free of genuine points (no partner in the partner domain): D = 0 is not followed there
-  json excluded = json::array();
-  for (const auto& b : T.excluded_regions)
-    excluded.push_back({CGAL::to_double(b.u0), CGAL::to_double(b.u1), CGAL::to_double(b.v0), CGAL::to_double(b.v1)});
-  j["excluded_regions"] = excluded;
-  if (!L.self_intersection) {
-    json contacts = json::array();
-    for (const auto& c : L.contacts)
-      contacts.push_back({{"kind", c.shared_curve ? "shared_boundary" : "point"},
-                          {"sides", {c.side_first, c.side_second}},
-                          {"first", {c.first_0.to_decimal_string(17), c.first_1.to_decimal_string(17)}},
-                          {"second", {c.second_0.to_decimal_string(17), c.second_1.to_decimal_string(17)}},
-                          {"point", {c.point[0], c.point[1], c.point[2]}}});
-    j["contacts"] = contacts;
-    // common regions of the two domains (pieces of one surface), exact: {u0, u1, v0, v1} and {s0, s1, t0, t1}
-    json overlaps = json::array();
-    for (const auto& ov : L.overlaps) {
-      json first = json::array(), second = json::array();
-      for (std::size_t k = 0; k < 4; ++k) {
-        first.push_back(bezoutian::io::to_exact_string(ov.first[k]));
-        second.push_back(bezoutian::io::to_exact_string(ov.second[k]));
-      }
-      overlaps.push_back({{"first", first},
-                          {"second", second},
-                          {"u", ov.along_u.text(ov.swapped ? "t" : "s")},
-                          {"v", ov.along_v.text(ov.swapped ? "s" : "t")}});
-    }
-    j["overlaps"] = overlaps;
-    // isolated real points of D = 0: contacts of the patches (every real partner, exact) or phantoms
-    json isolated = json::array();
-    for (const auto& ip : L.isolated_points) {
-      const auto& x = ip.lift;
-      json partners = json::array();
-      for (const auto& p : x.partners)
-        partners.push_back({{"v", exact_or_decimal(p.v)},
-                            {"s", exact_or_decimal(p.s)},
-                            {"kind", contact_kind(p)},
-                            {"point", {p.point[0], p.point[1], p.point[2]}}});
-      json e = {{"vertex", ip.vertex}, {"proved", x.proved}, {"genuine", ip.genuine()}, {"partners", partners},
-                {"reason", x.reason}};
-      if (x.exact)
-        e["projection"] = {bezoutian::io::to_exact_string(x.projection[0]),
-                           bezoutian::io::to_exact_string(x.projection[1])};
-      isolated.push_back(e);
-    }
-    j["isolated_points"] = isolated;
-  }
-  // where genuine parts of arcs end inside the box (the partner reaches the partner domain's boundary): a traced
-  // point of its component (points[point_index]) and a box proved to hold exactly one such crossing
-  json splits = json::array();
-  for (const auto& sp : L.split_points) {
-    std::size_t component = 0, offset = 0;
-    for (std::size_t ci = 0; ci < T.components.size(); ++ci) {
-      std::size_t off = 0;
-      for (std::size_t ei : T.components[ci].edges) {
-        if (ei == sp.arc) component = ci, offset = off;
-        off += L.arcs[ei].points.size();
-      }
-    }
-    const auto& q = L.arcs[sp.arc].points[sp.index];
-    const char* names[2][2] = {{"u", "v"}, {L.self_intersection ? "u" : "s", L.self_intersection ? "v" : "t"}};
-    splits.push_back({{"component", component},
-                      {"point_index", offset + sp.index},
-                      {"u", q.projection[0]},
-                      {"v", q.projection[1]},
-                      {"box", {{sp.box[0][0], sp.box[0][1]}, {sp.box[1][0], sp.box[1][1]}}},
-                      {"partner_box", {{sp.box[2][0], sp.box[2][1]}, {sp.box[3][0], sp.box[3][1]}}},
-                      {"boundary", {{"point", sp.point == 0 ? "first" : "second"},
-                                    {"parameter", names[sp.point][sp.coordinate]},
-                                    {"value", text(sp.bound)}}}});
-  }
-  j["split_points"] = splits;
-  if (L.self_intersection) {  // rank-1 points of the patch: where double curves end inside the domain
-    json pinch = json::array();
-    for (const auto& p : L.pinch_points)
-      pinch.push_back({{"u", p.u},
-                       {"v", p.v},
-                       // outward-rounded: the double box still holds the exact point
-                       {"box", {{CGAL::to_interval(p.box[0][0]).first, CGAL::to_interval(p.box[0][1]).second},
-                                {CGAL::to_interval(p.box[1][0]).first, CGAL::to_interval(p.box[1][1]).second}}},
-                       {"kernel_direction", p.rank_zero ? "none (the Jacobian is zero)" : p.chart == 0 ? "(1, m)" : "(m, 1)"},
-                       {"m", CGAL::to_double((p.m[0] + p.m[1]) / 2)}});
-    j["pinch_points"] = pinch;
-    j["pinch_points_complete"] = L.pinch_points_complete;
-    if (!L.pinch_points_note.empty()) j["pinch_points_note"] = L.pinch_points_note;
-  }
-  j["partner_variables"] = L.self_intersection ? json{"l", "k"} : json{"v", "s"};
-  j["lifting"] = "floating point along certified arcs (see doc/surface_intersection.md)";
-  j["seconds"] = seconds;
-  return j;
 }
 
 void write_svg(const std::string& path, const bezoutian::Surface_locus& L) {
@@ -544,8 +313,13 @@ void print_text(const bezoutian::Surface_locus& L, double seconds) {
 }
 
 void output(const bezoutian::Surface_locus& L, double s, const Patch& a, const Patch* b, const Intersect_options& o) {
-  if (o.json)
-    std::cout << to_json(L, s).dump(1) << "\n";
+  if (o.json) {
+    nlohmann::json j = envelope(L.self_intersection ? "self-intersect" : "intersect");
+    j["problem"] = L.self_intersection ? "self" : "patch/patch";
+    j["locus"] = locus_json(L);
+    j["seconds"] = s;
+    std::cout << j.dump(1) << "\n";
+  }
   else
     print_text(L, s);
   if (!o.svg.empty()) write_svg(o.svg, L);
@@ -709,8 +483,6 @@ void run(bool self, const Patch& a, const Patch* b, const Intersect_options& o, 
 }
 
 } // namespace
-
-nlohmann::json locus_json(const bezoutian::Surface_locus& L, double seconds) { return to_json(L, seconds); }
 
 std::shared_ptr<std::string> patch_intersect_domain() {
   static auto d = std::make_shared<std::string>();

@@ -1667,6 +1667,36 @@ TEST_CASE("structured surfaces: two height fields over one square meet along h(u
   CHECK(gc[1] < 0.02);
 }
 
+TEST_CASE("structured surfaces: two height fields touching at one point report the contact, exactly",
+          "[surface][structured]") {
+  // z = (2u - 1)^2 + (2v - 1)^2 and z = -(2u - 1)^2 - (2v - 1)^2 over x = 2u - 1, y = 2v - 1: h = 2((2u - 1)^2 +
+  // (2t - 1)^2) vanishes at (1/2, 1/2) only; the paraboloids touch there, tangentially, at the origin
+  const auto up = power_patch("2*u - 1", "2*v - 1", "(2*u - 1)^2 + (2*v - 1)^2", "1", 2, 2);
+  const auto down = power_patch("2*u - 1", "2*v - 1", "-(2*u - 1)^2 - (2*v - 1)^2", "1", 2, 2);
+  const Surface_locus L = intersection_locus(up, down);
+  INFO(L.note);
+  CHECK_FALSE(L.equation_computed);  // the common projection, without elimination
+  REQUIRE(L.topology_computed);
+  REQUIRE(L.topology.components.size() == 1);
+  CHECK(L.topology.components[0].isolated_point);
+  REQUIRE(L.isolated_points.size() == 1);
+  const auto& x = L.isolated_points[0].lift;
+  CHECK(x.proved);
+  CHECK(L.isolated_points[0].genuine());
+  REQUIRE(x.exact);
+  CHECK(x.projection[0] == Rational(1, 2));
+  CHECK(x.projection[1] == Rational(1, 2));
+  REQUIRE(x.partners.size() == 1);
+  CHECK(x.partners[0].v.compare(Rational(1, 2)) == 0);
+  CHECK(x.partners[0].s.compare(Rational(1, 2)) == 0);
+  CHECK(x.partners[0].tangency_decided);
+  CHECK(x.partners[0].tangent);
+  CHECK(std::hypot(x.partners[0].point[0], x.partners[0].point[1], x.partners[0].point[2]) < 1e-15);
+  std::string why;
+  CHECK(locus_certified(L, &why));
+  INFO(why);
+}
+
 TEST_CASE("structured surfaces: height fields apart, patches apart, coincident height fields", "[surface][structured]") {
   // parallel height fields 1/10 apart: h = -1/10, a nonzero constant: no intersection, proved
   const auto low = power_patch("u", "v", "u*v", "1", 1, 1);

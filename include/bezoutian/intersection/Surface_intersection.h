@@ -1649,6 +1649,11 @@ inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rationa
     if (!arc.points.empty()) arc.sheets.push_back(Locus_sheet{0, arc.points});
   }
   mark_ends_on_edge_lines(L, o, phi, &psi);
+  // isolated points of h = 0 (two height fields touching at a point): every real partner, exactly, as for any pair
+  for (std::size_t i = 0; i < L.topology.vertices.size(); ++i)
+    if (L.topology.vertices[i].kind == Curve_topology_vertex::isolated)
+      L.isolated_points.push_back(Locus_isolated_point{
+          i, isolated_point_partners(phi, psi, L.equation.square_free, L.topology.vertices[i], o.partner_domain)});
   return L;
 }
 
