@@ -11,7 +11,6 @@
 #define BEZOUTIAN_CLI_EXACT_JSON_H
 
 #include <bezoutian/algebraic/Algebraic_real.h>
-#include <bezoutian/algebraic/internal/bernstein_descartes_support.h>
 #include <bezoutian/io/Exact_number.h>
 
 #include "json_envelope.h"
@@ -55,30 +54,30 @@ nlohmann::json approx(const std::array<double, N>& p) {
 }
 
 namespace internal {
-// q rounded to enclosure_digits significant digits, up (toward +infinity) or down, as a decimal string.
-inline std::string directed_decimal(const bezoutian::Rational& q, bool up) {
-  using bezoutian::Rational;
-  if (CGAL::is_zero(q)) return "0";
-  const bool negative = q < Rational(0);
-  const Rational a = CGAL::abs(q);
-  const auto rounded = bezoutian::internal::round_to_significant(a, enclosure_digits);  // nearest: (E, digits)
-  const long e = rounded.first - (enclosure_digits - 1);                                // the last digit's place
-  Rational unit(1);
-  for (long k = 0; k < std::labs(e); ++k) unit = e > 0 ? unit * 10 : unit / 10;
-  Rational v = Rational(bezoutian::Integer(rounded.second)) * unit;
-  const bool away = up != negative;  // rounding |q| away from zero
-  if (away && v < a) v = v + unit;
-  if (!away && v > a) v = v - unit;
-  std::string s = CGAL::is_zero(v) ? std::string("0")
-                                   : bezoutian::internal::rational_to_decimal_string(v, enclosure_digits + 1);
-  // the digits are exact: drop the trailing zeros of the fraction
+// x to enclosure_digits significant digits, correctly rounded to nearest, without the zeros that end its fraction.
+inline std::string nearest_decimal(const bezoutian::Rational& x) {
+  const std::string s = bezoutian::Algebraic_real(x).to_decimal_string(enclosure_digits);
   const std::size_t e_at = s.find('e'), end = e_at == std::string::npos ? s.size() : e_at;
-  std::string mantissa = s.substr(0, end), exponent = s.substr(end);
+  std::string mantissa = s.substr(0, end);
   if (mantissa.find('.') != std::string::npos) {
     while (mantissa.back() == '0') mantissa.pop_back();
     if (mantissa.back() == '.') mantissa.pop_back();
   }
-  return (negative && s != "0" ? "-" : "") + mantissa + exponent;
+  return mantissa + s.substr(end);
+}
+
+// q rounded to enclosure_digits significant digits up (toward +infinity) or down. When the nearest decimal is on
+// the wrong side, q moved by |q| 10^-16 that way is rounded instead: one unit in the last place is at most
+// |q| 10^-16, so the nearest decimal to the moved number lies beyond q.
+inline std::string directed_decimal(const bezoutian::Rational& q, bool up) {
+  using bezoutian::Rational;
+  if (CGAL::is_zero(q)) return "0";
+  const std::string s = nearest_decimal(q);
+  const Rational r = bezoutian::io::exact_number(s);
+  if (up ? !(r < q) : !(q < r)) return s;
+  Rational shift = CGAL::abs(q);
+  for (int k = 0; k < enclosure_digits - 1; ++k) shift = shift / 10;
+  return nearest_decimal(up ? q + shift : q - shift);
 }
 }  // namespace internal
 
