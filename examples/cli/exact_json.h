@@ -22,6 +22,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace bezoutian_cli {
 
@@ -117,6 +118,18 @@ inline nlohmann::json algebraic(const bezoutian::Algebraic_real& a) {
   j["polynomial"] = poly;
   j["interval"] = exact_interval(a.lower(), a.upper());
   return j;
+}
+
+/// The algebraic number of a JSON object written by algebraic() (its rational, or its polynomial and interval).
+inline bezoutian::Algebraic_real algebraic_from_json(const nlohmann::json& j) {
+  if (j.contains("rational"))
+    return bezoutian::Algebraic_real(bezoutian::io::exact_number(j.at("rational").get<std::string>()));
+  std::vector<bezoutian::Integer> c;
+  for (const auto& x : j.at("polynomial")) c.push_back(bezoutian::io::exact_number(x.get<std::string>()).numerator());
+  const auto& i = j.at("interval");
+  return bezoutian::Algebraic_real(bezoutian::Polynomial_1<bezoutian::Integer>(c.begin(), c.end()),
+                                   bezoutian::io::exact_number(i.at(0).get<std::string>()),
+                                   bezoutian::io::exact_number(i.at(1).get<std::string>()));
 }
 
 /// An exact end for text output: the rational itself, or (irrational) the decimal.

@@ -198,6 +198,8 @@ json split_points_json(const bezoutian::Surface_locus& L) {
                       {"projection", approx(q.projection)},
                       {"box", json::array({enclosure(sp.box[0][0], sp.box[0][1]), enclosure(sp.box[1][0], sp.box[1][1])})},
                       {"partner_box", json::array({enclosure(sp.box[2][0], sp.box[2][1]), enclosure(sp.box[3][0], sp.box[3][1])})},
+                      // the index in "contacts" when the split point is that exact contact of the boundary curves
+                      {"contact", sp.contact >= 0 ? json(sp.contact) : json(nullptr)},
                       {"boundary", {{"point", sp.point == 0 ? "first" : "second"},
                                     {"parameter", names[sp.point][sp.coordinate]},
                                     {"value", exact(sp.bound)}}}});

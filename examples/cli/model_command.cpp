@@ -54,6 +54,8 @@ nlohmann::json curve_json(const bezoutian::Model_intersection& R, const bezoutia
   return {{"closed", c.closed},
           {"pieces_certified", c.pieces_certified},
           {"largest_gap", approx(c.largest_gap)},
+          {"links", c.links},
+          {"links_proved", c.links_proved},
           {"pieces", pieces},
           {"points_3d", points}};
 }
@@ -94,7 +96,9 @@ void run_model(const Model_options& o) {
     for (const auto& p : R.problems) sums.push_back(summarize(p, o.json));
     where = std::to_string(R.threads_used) + " thread(s)";
   }
-  const std::vector<bezoutian::Model_curve> curves = bezoutian::chain_model_curves(R);
+  bezoutian::Model_curve_options curve_options;
+  curve_options.patches = &f.doc.patches;  // (links at exact contact points are proved)
+  const std::vector<bezoutian::Model_curve> curves = bezoutian::chain_model_curves(R, curve_options);
   if (!o.obj.empty()) write_model_obj(o.obj, f.doc.patches, R, curves);
   if (!o.svg_dir.empty()) write_model_svgs(o.svg_dir, R);
   std::size_t certified = 0, failed = 0;
@@ -160,7 +164,9 @@ void run_model(const Model_options& o) {
       std::cout << " " << problem_name(R.problems[p.problem]) << " arc " << p.arc << " sheet " << p.sheet
                 << (p.reversed ? " reversed" : "") << ";";
     std::cout << (c.pieces_certified ? " every piece certified" : " not every piece certified");
-    if (c.pieces.size() > 1 || c.closed) std::cout << ", largest gap at a link " << c.largest_gap;
+    if (c.links)
+      std::cout << ", " << c.links_proved << " of " << c.links << " link(s) proved exact, largest gap at a link "
+                << c.largest_gap;
     std::cout << "\n";
   }
   std::cout << certified << " of " << R.problems.size() << " problems certified";

@@ -3,6 +3,7 @@
 // is left, on tag `work_tag`. A result is JSON text: the problem's status and summary, and the points of each sheet
 // of its locus (doubles printed with 17 significant digits, so read back exactly), so that rank 0 chains the curves
 // of the model from the same numbers as a threaded run.
+#include "exact_json.h"
 #include "locus_json.h"
 #include "model_mpi.h"
 
@@ -56,9 +57,17 @@ std::string encode(std::size_t k, const bezoutian::Model_problem& p, const Probl
       nlohmann::json points = nlohmann::json::array();
       for (const auto& q : p.locus.arcs[a].sheets[h].points)
         points.push_back({q.first[0], q.first[1], q.second[0], q.second[1], q.point_3d[0], q.point_3d[1],
-                          q.point_3d[2]});
-      sheets.push_back({{"arc", a}, {"sheet", h}, {"points", points}});
+                          q.point_3d[2], q.partner[0], q.partner[1]});
+      sheets.push_back({{"arc", a}, {"sheet", h}, {"first", p.locus.arcs[a].sheets[h].first}, {"points", points}});
     }
+  // the boundary contacts and split points: the exact ends of the pieces, whose links chain_model_curves proves
+  nlohmann::json contacts = nlohmann::json::array(), splits = nlohmann::json::array();
+  for (const auto& c : p.locus.contacts)
+    contacts.push_back({c.side_first, c.side_second, c.shared_curve, algebraic(c.first_0), algebraic(c.first_1),
+                        algebraic(c.second_0), algebraic(c.second_1), c.point[0], c.point[1], c.point[2]});
+  for (const auto& sp : p.locus.split_points)
+    splits.push_back({sp.arc, sp.index, sp.point, sp.coordinate, exact(sp.bound), sp.box[0][0], sp.box[0][1],
+                      sp.box[1][0], sp.box[1][1], sp.box[2][0], sp.box[2][1], sp.box[3][0], sp.box[3][1], sp.contact});
   const nlohmann::json j{{"problem", k},
                          {"computed", p.computed},
                          {"error", p.error},
@@ -70,7 +79,9 @@ std::string encode(std::size_t k, const bezoutian::Model_problem& p, const Probl
                            s.genuine_edge_lines}},
                          {"locus", s.locus},
                          {"arcs", p.locus.arcs.size()},
-                         {"sheets", sheets}};
+                         {"sheets", sheets},
+                         {"contacts", contacts},
+                         {"split_points", splits}};
   return j.dump();
 }
 
@@ -93,14 +104,32 @@ void decode(const std::string& text, bezoutian::Model_intersection& R, std::vect
     auto& arc = p.locus.arcs.at(sh.at("arc").get<std::size_t>());
     const std::size_t h = sh.at("sheet").get<std::size_t>();
     if (arc.sheets.size() <= h) arc.sheets.resize(h + 1);
+    arc.sheets[h].first = sh.at("first").get<std::size_t>();
     for (const auto& q : sh.at("points")) {
       bezoutian::Locus_point x;
       x.first = {q.at(0), q.at(1)};
       x.second = {q.at(2), q.at(3)};
       x.point_3d = {q.at(4), q.at(5), q.at(6)};
+      x.partner = {q.at(7), q.at(8)};
       x.genuine = true;
       arc.sheets[h].points.push_back(x);
     }
+  }
+  for (const auto& c : j.at("contacts")) {
+    bezoutian::Boundary_contact x;
+    x.side_first = c.at(0), x.side_second = c.at(1), x.shared_curve = c.at(2);
+    x.first_0 = algebraic_from_json(c.at(3)), x.first_1 = algebraic_from_json(c.at(4));
+    x.second_0 = algebraic_from_json(c.at(5)), x.second_1 = algebraic_from_json(c.at(6));
+    x.point = {c.at(7), c.at(8), c.at(9)};
+    p.locus.contacts.push_back(x);
+  }
+  for (const auto& q : j.at("split_points")) {
+    bezoutian::Locus_split_point x;
+    x.arc = q.at(0), x.index = q.at(1), x.point = q.at(2), x.coordinate = q.at(3);
+    x.bound = bezoutian::io::exact_number(q.at(4).get<std::string>());
+    for (std::size_t d = 0; d < 4; ++d) x.box[d] = {q.at(5 + 2 * d), q.at(6 + 2 * d)};
+    x.contact = q.at(13);
+    p.locus.split_points.push_back(x);
   }
 }
 

@@ -181,11 +181,22 @@ TEST_CASE("model curves: a circle cut by the seams of a split plane and a split 
       patch_from_power({"u - 1", "2*v - 1", "(u - 1)^2 + (2*v - 1)^2 - 1/2"}, 2, 2),
       patch_from_power({"u", "2*v - 1", "u^2 + (2*v - 1)^2 - 1/2"}, 2, 2)};
   const Model_intersection R = intersect_model(patches);
-  const std::vector<Model_curve> curves = chain_model_curves(R);
+  Model_curve_options co;
+  co.patches = &patches;
+  const std::vector<Model_curve> curves = chain_model_curves(R, co);
   REQUIRE(curves.size() == 1);
   const Model_curve& c = curves[0];
   CHECK(c.closed);
   REQUIRE(c.pieces.size() == 2);
+  // both links are exact: each end is the crossing of the plane's seam x = 0 with the paraboloid's, on the seam
+  // curve that the two halves of the plane share (at 1/2 +- sqrt(2)/4 along it)
+  CHECK(c.links == 2);
+  CHECK(c.links_proved == 2);
+  // without the patches the links are found the same way but not proved
+  const std::vector<Model_curve> unproved = chain_model_curves(R);
+  REQUIRE(unproved.size() == 1);
+  CHECK(unproved[0].links == 2);
+  CHECK(unproved[0].links_proved == 0);
   const Model_problem &a = R.problems[c.pieces[0].problem], &b = R.problems[c.pieces[1].problem];
   CHECK(std::make_pair(a.first, a.second) == std::make_pair(std::size_t(0), std::size_t(2)));
   CHECK(std::make_pair(b.first, b.second) == std::make_pair(std::size_t(1), std::size_t(3)));
@@ -223,11 +234,17 @@ TEST_CASE("model curves: the handle's upper end cuts the body in one closed curv
   Model_intersection_options o;
   o.self_intersections = false;
   const Model_intersection R = intersect_model(patches, o);
-  const std::vector<Model_curve> curves = chain_model_curves(R);
+  Model_curve_options co;
+  co.patches = &patches;
+  const std::vector<Model_curve> curves = chain_model_curves(R, co);
   REQUIRE(curves.size() == 1);
   const Model_curve& c = curves[0];
   CHECK(c.closed);
   REQUIRE(c.pieces.size() == 2);
+  // both links proved: the crossings of the handle's seam with the body's, exact points of the body's seam curve
+  // (shared by sectors 5 and 6)
+  CHECK(c.links == 2);
+  CHECK(c.links_proved == 2);
   std::set<std::pair<std::size_t, std::size_t>> pairs;
   for (const auto& p : c.pieces) pairs.insert({R.problems[p.problem].first, R.problems[p.problem].second});
   CHECK(pairs == std::set<std::pair<std::size_t, std::size_t>>{{0, 2}, {1, 3}});

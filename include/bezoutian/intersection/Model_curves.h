@@ -13,9 +13,15 @@
 //
 // What is proved and what is not. Each piece is a branch of its problem's locus, certified as that locus is
 // (locus_certified: every point's status, every fibre, so every branch of the curve over the problem's domains is
-// among the pieces). The links are decided in floating point from the traced end points: they join certified
-// pieces into curves for presentation and for counting closed curves, and are not themselves a proof that two ends
-// are one point. `Model_curve::largest_gap` says how far apart the linked ends were.
+// among the pieces). The links are found in floating point from the traced end points; `Model_curve::largest_gap`
+// says how far apart the linked ends were. A link is proved exact when both ends are exact points: where a curve
+// crosses a seam at a crossing of two boundary curves (the handle's and the body's seams of the teapot), each end is
+// a split point made from a Boundary_contact (Locus_split_point::contact: the arc's end vertex proved to be that
+// exact common point of the two patches' boundary curves, and the only zero of the partner equations in its box),
+// and the sheet's end partner lies in that box. Two such ends are one point of space when they lie on one boundary
+// curve of the model (identical control nets, in the same or the opposite direction) at the same parameter
+// (compared exactly, as algebraic numbers). Other links (an end on a side of one patch only, at a singular point
+// of D = 0) stay floating point.
 #ifndef BEZOUTIAN_INTERSECTION_MODEL_CURVES_H
 #define BEZOUTIAN_INTERSECTION_MODEL_CURVES_H
 
@@ -48,6 +54,9 @@ struct Model_curve {
   double largest_gap = 0;
   /// Every piece's problem is certified (Model_problem::certified): each piece is a proved branch of the curve.
   bool pieces_certified = false;
+  /// The links between consecutive pieces (pieces - 1, or pieces for a closed curve), and those proved exact: both
+  /// ends one exact point of a boundary curve (see the header comment; needs Model_curve_options::patches).
+  std::size_t links = 0, links_proved = 0;
 };
 
 /// Options of chain_model_curves. The tolerances are absolute distances in space; a negative value means the
@@ -55,6 +64,8 @@ struct Model_curve {
 struct Model_curve_options {
   double tolerance = -1;
   double isolation = -1;
+  /// The model's patches (those given to intersect_model): with them, links at exact contact points are proved.
+  const std::vector<Rational_bezier_patch<Rational>>* patches = nullptr;
 };
 
 namespace internal {
@@ -71,6 +82,59 @@ inline double distance_3(const std::array<double, 3>& a, const std::array<double
 
 inline const Locus_sheet& piece_sheet(const Model_intersection& R, const Model_curve_piece& p) {
   return R.problems[p.problem].locus.arcs[p.arc].sheets[p.sheet];
+}
+
+// A point on a boundary curve of a patch of the model: the patch, its side (boundary_curve order), the parameter.
+struct Boundary_curve_point {
+  std::size_t patch = 0;
+  int side = 0;
+  Algebraic_real parameter;
+};
+
+// The exact point at an end of a piece (0: the sheet's first point, 1: its last), when it is a boundary-contact split
+// point of its locus: the contact on the first patch's boundary curve and on the second's. Empty otherwise.
+inline std::vector<Boundary_curve_point> exact_piece_end(const Model_intersection& R, const Model_curve_piece& p,
+                                                         int end) {
+  const Model_problem& mp = R.problems[p.problem];
+  const Surface_locus& L = mp.locus;
+  const Locus_sheet& sh = L.arcs[p.arc].sheets[p.sheet];
+  if (sh.points.empty()) return {};
+  const std::size_t index = end == 0 ? sh.first : sh.first + sh.points.size() - 1;
+  const Locus_point& q = end == 0 ? sh.points.front() : sh.points.back();
+  for (const Locus_split_point& sp : L.split_points) {
+    if (sp.arc != p.arc || sp.index != index || sp.contact < 0 || std::size_t(sp.contact) >= L.contacts.size()) continue;
+    // the sheet's end is the zero in the split point's box: its partner lies there
+    if (!(sp.box[2][0] <= q.partner[0] && q.partner[0] <= sp.box[2][1] && sp.box[3][0] <= q.partner[1] &&
+          q.partner[1] <= sp.box[3][1]))
+      continue;
+    const Boundary_contact& c = L.contacts[std::size_t(sp.contact)];
+    return {{mp.first, c.side_first, c.first_0}, {mp.second, c.side_second, c.second_0}};
+  }
+  return {};
+}
+
+// 1 - a, exactly.
+inline Algebraic_real one_minus(const Algebraic_real& a) {
+  if (a.is_rational()) return Algebraic_real(Rational(1) - a.rational_value());
+  const Polynomial_1<Integer> f = a.polynomial(), one_minus_x(Integer(1), Integer(-1));
+  Polynomial_1<Integer> g(0);
+  for (int i = f.degree(); i >= 0; --i) g = g * one_minus_x + Polynomial_1<Integer>(f[i]);  // f(1 - x)
+  return Algebraic_real(g, Rational(1) - a.upper(), Rational(1) - a.lower());
+}
+
+// Two exact piece ends are one point of space: some boundary curve through the one and some boundary curve through
+// the other are the same curve (identical nets, either direction) at the same parameter.
+inline bool same_exact_point(const std::vector<Rational_bezier_patch<Rational>>& patches,
+                             const std::vector<Boundary_curve_point>& a, const std::vector<Boundary_curve_point>& b) {
+  using Curve = Rational_bezier_curve_3<Rational>;
+  for (const Boundary_curve_point& x : a)
+    for (const Boundary_curve_point& y : b) {
+      if (x.patch >= patches.size() || y.patch >= patches.size()) continue;
+      const Curve cx = patches[x.patch].boundary_curve<Curve>(x.side), cy = patches[y.patch].boundary_curve<Curve>(y.side);
+      if (cx == cy && x.parameter == y.parameter) return true;
+      if (cx == cy.reversed() && x.parameter == one_minus(y.parameter)) return true;
+    }
+  return false;
 }
 
 }  // namespace internal
@@ -140,6 +204,16 @@ inline std::vector<Model_curve> chain_model_curves(const Model_intersection& R, 
   std::vector<std::size_t> link(ends.size(), none);
   for (std::size_t e = 0; e < ends.size(); ++e)
     if (only[e] != none && only[only[e]] == e) link[e] = only[e];
+  // the links proved exact (see the header comment)
+  std::vector<bool> link_proved(ends.size(), false);
+  if (o.patches)
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      const std::size_t f = link[e];
+      if (f == none || f < e) continue;
+      const auto a = internal::exact_piece_end(R, pieces[ends[e].piece], ends[e].end);
+      const auto b = a.empty() ? a : internal::exact_piece_end(R, pieces[ends[f].piece], ends[f].end);
+      link_proved[e] = link_proved[f] = !b.empty() && internal::same_exact_point(*o.patches, a, b);
+    }
 
   // walk the chains: first from every unlinked end (open curves), then the remaining pieces (closed curves)
   std::vector<bool> used(pieces.size(), false);
@@ -159,6 +233,8 @@ inline std::vector<Model_curve> chain_model_curves(const Model_intersection& R, 
       c.pieces.push_back(p);
       const std::size_t exit = 2 * piece + (p.reversed ? 0 : 1);  // the other end of this piece
       if (link[exit] == none) break;
+      ++c.links;
+      c.links_proved += link_proved[exit];
       c.largest_gap = std::max(c.largest_gap, gap[exit]);
       e = link[exit];
     }

@@ -879,6 +879,82 @@ void insert_split_points(Surface_locus& L, const Partner_equations& eq, const Su
 // becomes a Locus_split_point: its status is the
 // contact's own (genuine: both parameter points in the closed domains), and the span next to it is decided by the
 // side of the line g = 0 the partner is on (classify_span_at_split), as at a split point inside the box.
+// The square-free D of L restricted to the box side u = c (u_fixed) or t = c, a polynomial in the other coordinate.
+inline Polynomial_1<Rational> square_free_on_side(const Surface_locus& L, bool u_fixed, const Rational& c) {
+  const Polynomial_2<Integer>& Dsf = L.equation.square_free;
+  std::vector<Rational> coefficients;
+  for (int j = 0; j <= Dsf.degree(); ++j) {
+    const Polynomial_1<Integer>& Dj = Dsf[j];
+    if (u_fixed) {  // D_j(c), the coefficient of t^j
+      Rational value(0);
+      for (int i = Dj.degree(); i >= 0; --i) value = value * c + Rational(Dj[i]);
+      coefficients.push_back(value);
+    } else {  // sum_j D_j(u) c^j
+      Rational power(1);
+      for (int l = 0; l < j; ++l) power *= c;
+      if (coefficients.size() < std::size_t(Dj.degree() + 1)) coefficients.resize(std::size_t(Dj.degree() + 1), Rational(0));
+      for (int i = 0; i <= Dj.degree(); ++i) coefficients[std::size_t(i)] += Rational(Dj[i]) * power;
+    }
+  }
+  return Polynomial_1<Rational>(coefficients.begin(), coefficients.end());
+}
+
+// An exact common point of the boundary curves of both patches (a point Boundary_contact) as the point (u, t) of
+// the box side it lies on, for the arc-end tests below; empty for shared pieces, corners of the box and points on
+// an edge line.
+struct Contact_on_box_side {
+  bool found = false;
+  bool u_fixed = false;          // on the box side u = value (else t = value)
+  Rational value;                // that side's coordinate
+  Double_interval u, t, v, s;    // enclosures of the contact's coordinates
+};
+
+inline Contact_on_box_side contact_on_box_side(const Surface_locus& L, const Boundary_contact& c) {
+  using D = Double_interval;
+  Contact_on_box_side r;
+  if (c.shared_curve || c.first_0 != c.first_1) return r;
+  const bool u_fixed = c.side_first == 1 || c.side_first == 3, t_fixed = c.side_second == 0 || c.side_second == 2;
+  if (u_fixed == t_fixed) return r;  // (a box corner, or both partner coordinates on the partner's boundary)
+  auto enclosure = [](const Algebraic_real& a) {
+    const auto i = a.to_interval();
+    return D{i.first, i.second};
+  };
+  // a boundary point of a patch: (u, v) from the side (boundary_curve order) and the curve's parameter
+  auto on_side = [](int side, const D& parameter, D& u, D& v) {
+    const D zero{0, 0}, one{1, 1};
+    switch (side) {
+      case 0: u = parameter, v = zero; break;
+      case 1: u = one, v = parameter; break;
+      case 2: u = parameter, v = one; break;
+      default: u = zero, v = parameter; break;
+    }
+  };
+  on_side(c.side_first, enclosure(c.first_0), r.u, r.v);
+  on_side(c.side_second, enclosure(c.second_0), r.s, r.t);
+  const D& free_coordinate = u_fixed ? r.t : r.u;  // (the projection's coordinate along the box side)
+  if (!(free_coordinate.lo > 0 && free_coordinate.hi < 1)) return r;  // (a corner of the box)
+  for (const Locus_edge_line& l : L.edge_lines) {
+    const D& x = l.side == 1 || l.side == 3 ? r.u : r.t;
+    if (Rational(x.lo) <= l.value && l.value <= Rational(x.hi)) return r;
+  }
+  r.u_fixed = u_fixed;
+  r.value = u_fixed ? Rational(c.side_first == 1 ? 1 : 0) : Rational(c.side_second == 2 ? 1 : 0);
+  r.found = true;
+  return r;
+}
+
+// The vertex at an arc end is the contact: its box holds the contact's (u, t), and the square-free D on the box side
+// has exactly one root in the hull of the two enclosures along the side (counted exactly), which is then both.
+inline bool vertex_is_contact(const Curve_topology_vertex& x, const Contact_on_box_side& p,
+                              const Polynomial_1<Rational>& on_side_line) {
+  using D = Double_interval;
+  if (!x.on_boundary) return false;
+  if (!(x.u_lo <= p.u.lo && p.u.hi <= x.u_hi && x.v_lo <= p.t.lo && p.t.hi <= x.v_hi)) return false;
+  const D along = p.u_fixed ? D{std::min(x.v_lo, p.t.lo), std::max(x.v_hi, p.t.hi)}
+                            : D{std::min(x.u_lo, p.u.lo), std::max(x.u_hi, p.u.hi)};
+  return !CGAL::is_zero(on_side_line) && count_real_roots(on_side_line, Rational(along.lo), Rational(along.hi)) == 1;
+}
+
 template <class Lift>
 void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, const Surface_intersection_options& o,
                                  Lift lift_point) {
@@ -889,72 +965,26 @@ void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, 
   };
   if (!same(o.box, unit) || !same(o.partner_domain, unit)) return;  // (contacts are on the patches' own sides)
   using D = Double_interval;
-  auto enclosure = [](const Algebraic_real& a) {
-    const auto i = a.to_interval();
-    return D{i.first, i.second};
-  };
-  // a boundary point of a patch: (u, v) from the side (boundary_curve order) and the curve's parameter
-  auto on_side = [&](int side, const D& parameter, D& u, D& v) {
-    const D zero{0, 0}, one{1, 1};
-    switch (side) {
-      case 0: u = parameter, v = zero; break;
-      case 1: u = one, v = parameter; break;
-      case 2: u = parameter, v = one; break;
-      default: u = zero, v = parameter; break;
-    }
-  };
-  for (const Boundary_contact& c : L.contacts) {
-    if (c.shared_curve || c.first_0 != c.first_1) continue;
-    const bool u_fixed = c.side_first == 1 || c.side_first == 3, t_fixed = c.side_second == 0 || c.side_second == 2;
-    if (u_fixed == t_fixed) continue;  // (a box corner, or both partner coordinates on the partner's boundary)
-    D u, v, s, t;
-    on_side(c.side_first, enclosure(c.first_0), u, v);
-    on_side(c.side_second, enclosure(c.second_0), s, t);
+  for (std::size_t ci = 0; ci < L.contacts.size(); ++ci) {
+    const Boundary_contact& c = L.contacts[ci];
+    const Contact_on_box_side at = contact_on_box_side(L, c);
+    if (!at.found) continue;
+    const bool u_fixed = at.u_fixed;
+    const D &u = at.u, &t = at.t, &v = at.v, &s = at.s;
     // the partner side crossed there: Q's first coordinate s = 0 or 1 (box side u = c), or P's second v (t = c)
     Partner_domain_side side;
     side.point = u_fixed ? 1 : 0;
     side.coordinate = u_fixed ? 0 : 1;
     side.bound = u_fixed ? Rational(c.side_second == 1 ? 1 : 0) : Rational(c.side_first == 2 ? 1 : 0);
     const std::array<D, 4> contact{u, t, v, s};
-    const D& free_coordinate = u_fixed ? t : u;  // (the projection's coordinate along the box side)
-    if (!(free_coordinate.lo > 0 && free_coordinate.hi < 1)) continue;  // (a corner of the box)
-    bool on_edge_line = false;
-    for (const Locus_edge_line& l : L.edge_lines) {
-      const D& x = l.side == 1 || l.side == 3 ? u : t;
-      on_edge_line = on_edge_line || (Rational(x.lo) <= l.value && l.value <= Rational(x.hi));
-    }
-    if (on_edge_line) continue;
     // the square-free D on the box side through the contact: u = u* (a polynomial in t) or t = t* (in u)
-    const Rational side_value = u_fixed ? Rational(c.side_first == 1 ? 1 : 0) : Rational(c.side_second == 2 ? 1 : 0);
-    const Polynomial_2<Integer>& Dsf = L.equation.square_free;
-    std::vector<Rational> coefficients;
-    for (int j = 0; j <= Dsf.degree(); ++j) {
-      const Polynomial_1<Integer>& Dj = Dsf[j];
-      if (u_fixed) {  // D_j(u*), the coefficient of t^j
-        Rational value(0);
-        for (int i = Dj.degree(); i >= 0; --i) value = value * side_value + Rational(Dj[i]);
-        coefficients.push_back(value);
-      } else {  // sum_j D_j(u) t*^j
-        Rational power(1);
-        for (int l = 0; l < j; ++l) power *= side_value;
-        if (coefficients.size() < std::size_t(Dj.degree() + 1)) coefficients.resize(std::size_t(Dj.degree() + 1), Rational(0));
-        for (int i = 0; i <= Dj.degree(); ++i) coefficients[std::size_t(i)] += Rational(Dj[i]) * power;
-      }
-    }
-    const Polynomial_1<Rational> on_side_line(coefficients.begin(), coefficients.end());
+    const Polynomial_1<Rational> on_side_line = square_free_on_side(L, u_fixed, at.value);
     for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
       Locus_arc& arc = L.arcs[k];
       const Curve_topology_edge& e = L.topology.edges[k];
       if (arc.points.size() < 2 || arc.points.size() != e.polyline.size()) continue;
       for (const std::size_t j : {std::size_t(0), arc.points.size() - 1}) {
-        const Curve_topology_vertex& x = L.topology.vertices[j == 0 ? e.source : e.target];
-        if (!x.on_boundary) continue;
-        if (!(x.u_lo <= u.lo && u.hi <= x.u_hi && x.v_lo <= t.lo && t.hi <= x.v_hi)) continue;
-        const D along = u_fixed ? D{std::min(x.v_lo, t.lo), std::max(x.v_hi, t.hi)}
-                                : D{std::min(x.u_lo, u.lo), std::max(x.u_hi, u.hi)};
-        if (!(!CGAL::is_zero(on_side_line) &&
-              count_real_roots(on_side_line, Rational(along.lo), Rational(along.hi)) == 1))
-          continue;
+        if (!vertex_is_contact(L.topology.vertices[j == 0 ? e.source : e.target], at, on_side_line)) continue;
         bool known = false;
         for (const Locus_split_point& sp : L.split_points) known = known || (sp.arc == k && sp.index == j);
         if (known) continue;
@@ -981,6 +1011,7 @@ void insert_contact_split_points(Surface_locus& L, const Partner_equations& eq, 
         sp.coordinate = side.coordinate;
         sp.bound = side.bound;
         for (int d = 0; d < 4; ++d) sp.box[std::size_t(d)] = {Z[d].lo, Z[d].hi};
+        sp.contact = int(ci);
         L.split_points.push_back(sp);
       }
     }
@@ -1642,6 +1673,40 @@ inline Surface_locus common_projection_locus(const Rational_bezier_patch<Rationa
       inserted += refine_arc(e, fibres, D_double, model, o.polyline_tolerance, o.max_refinement_points - inserted);
     }
   }
+  // arc ends at exact common points of the boundary curves (where a curve of a model crosses a seam): split points
+  // made from the contact, as insert_contact_split_points makes them; the partner (v, s) = (t, u) is exact here, so
+  // once the end vertex is proved to be the contact (vertex_is_contact), the contact's enclosures are the box
+  auto is_unit = [](const Parameter_box& b) { return b.u0 == 0 && b.u1 == 1 && b.v0 == 0 && b.v1 == 1; };
+  if (L.topology_method == "subdivision" && is_unit(o.box) && is_unit(o.partner_domain))
+    for (std::size_t ci = 0; ci < L.contacts.size(); ++ci) {
+      const Boundary_contact& c = L.contacts[ci];
+      const Contact_on_box_side at = contact_on_box_side(L, c);
+      if (!at.found) continue;
+      const Polynomial_1<Rational> on_side_line = square_free_on_side(L, at.u_fixed, at.value);
+      for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
+        Locus_arc& arc = L.arcs[k];
+        const Curve_topology_edge& e = L.topology.edges[k];
+        if (arc.points.size() < 2) continue;
+        for (const std::size_t j : {std::size_t(0), arc.points.size() - 1}) {
+          if (!vertex_is_contact(L.topology.vertices[j == 0 ? e.source : e.target], at, on_side_line)) continue;
+          bool known = false;
+          for (const Locus_split_point& sp : L.split_points) known = known || (sp.arc == k && sp.index == j);
+          if (known) continue;
+          Locus_point q = lift_point(at.u.mid(), at.t.mid(), nullptr);
+          q.partner_enclosure = {{{at.t.lo, at.t.hi}, {at.u.lo, at.u.hi}}};  // (v, s) = (t, u)
+          arc.points[j] = q;
+          Locus_split_point sp;
+          sp.arc = k;
+          sp.index = j;
+          sp.point = at.u_fixed ? 1 : 0;  // the partner on its side: s = 1 or 0 (box side u), or v (box side t)
+          sp.coordinate = at.u_fixed ? 0 : 1;
+          sp.bound = at.u_fixed ? Rational(c.side_second == 1 ? 1 : 0) : Rational(c.side_first == 2 ? 1 : 0);
+          sp.box = {{{at.u.lo, at.u.hi}, {at.t.lo, at.t.hi}, {at.t.lo, at.t.hi}, {at.u.lo, at.u.hi}}};
+          sp.contact = int(ci);
+          L.split_points.push_back(sp);
+        }
+      }
+    }
   // one sheet per arc, all partners: Phi(u, v) = Psi(s, t) gives pi Psi(u, v) = pi Psi(s, t), so (s, t) = (u, v)
   for (Locus_arc& arc : L.arcs) {
     arc.undecided_fraction = 0;

@@ -118,6 +118,9 @@ struct Locus_split_point {
   Rational bound;         ///< the boundary value of that coordinate
   /// {x1, x2, y1, y2}: the projection (u, v or u, t) and the partner ((l, k) or (v, s)), each {lo, hi}
   std::array<std::array<double, 2>, 4> box{};
+  /// For an arc end at a common point of the boundary curves: its index in Surface_locus::contacts (the point is
+  /// that exact contact); -1 otherwise.
+  int contact = -1;
 };
 
 /// A side of the box on which D vanishes identically: every point of it is a point of the projected locus. Its
