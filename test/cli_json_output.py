@@ -17,6 +17,7 @@ Usage: cli_json_output.py CLI SCHEMA EXAMPLES_DATA TEST_DATA SHARED_DATA
 """
 import copy
 import json
+from fractions import Fraction
 import os
 import subprocess
 import sys
@@ -196,6 +197,28 @@ if d:
     if not ok:
         fail("touching paraboloids: expected one tangent contact at (u, t) = (1/2, 1/2) with partner (1/2, 1/2): %s"
              % json.dumps(d["locus"].get("isolated_points"))[:600])
+
+# Proved enclosures are rounded outward: every vertex's box, as printed, holds the double it was computed around
+# (the printed projection reads back to that double), compared exactly.
+def loci(doc):
+    if doc and "locus" in doc:
+        yield doc["locus"]
+    for p in (doc or {}).get("problems", []):
+        if "locus" in p:
+            yield p["locus"]
+
+
+boxes = 0
+for name, d in docs.items():
+    for L in loci(d):
+        for v in L["singular_points"] + L["boundary_points"]:
+            for x, (lo, hi) in zip(v["projection"], v["box"]):
+                boxes += 1
+                if not Fraction(lo) <= Fraction(float(x)) <= Fraction(hi):
+                    fail("%s: vertex box [%s, %s] does not hold its point %s" % (name, lo, hi, x))
+print("%d vertex enclosures hold their points" % boxes)
+if boxes < 10:
+    fail("too few vertex enclosures checked: %d" % boxes)
 
 if failures:
     print("%d failure(s)" % len(failures))

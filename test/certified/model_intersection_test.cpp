@@ -45,6 +45,22 @@ std::vector<Rational_bezier_patch<Rational>> teapot() {
   return io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt")).patches;
 }
 
+// The one curve of a model, chained with the patches so that its links at exact contacts are proved: closed, of two
+// pieces, both links proved exact (where each piece ends at a crossing of two seams)
+Model_curve closed_curve_of_two_pieces_with_exact_links(const Model_intersection& R,
+                                                        const std::vector<Rational_bezier_patch<Rational>>& patches) {
+  Model_curve_options co;
+  co.patches = &patches;
+  const std::vector<Model_curve> curves = chain_model_curves(R, co);
+  REQUIRE(curves.size() == 1);
+  const Model_curve& c = curves[0];
+  CHECK(c.closed);
+  REQUIRE(c.pieces.size() == 2);
+  CHECK(c.links == 2);
+  CHECK(c.links_proved == 2);
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("model: the broad phase keeps every pair of the teapot that shares a boundary", "[model]") {
@@ -181,17 +197,9 @@ TEST_CASE("model curves: a circle cut by the seams of a split plane and a split 
       patch_from_power({"u - 1", "2*v - 1", "(u - 1)^2 + (2*v - 1)^2 - 1/2"}, 2, 2),
       patch_from_power({"u", "2*v - 1", "u^2 + (2*v - 1)^2 - 1/2"}, 2, 2)};
   const Model_intersection R = intersect_model(patches);
-  Model_curve_options co;
-  co.patches = &patches;
-  const std::vector<Model_curve> curves = chain_model_curves(R, co);
-  REQUIRE(curves.size() == 1);
-  const Model_curve& c = curves[0];
-  CHECK(c.closed);
-  REQUIRE(c.pieces.size() == 2);
   // both links are exact: each end is the crossing of the plane's seam x = 0 with the paraboloid's, on the seam
   // curve that the two halves of the plane share (at 1/2 +- sqrt(2)/4 along it)
-  CHECK(c.links == 2);
-  CHECK(c.links_proved == 2);
+  const Model_curve c = closed_curve_of_two_pieces_with_exact_links(R, patches);
   // without the patches the links are found the same way but not proved
   const std::vector<Model_curve> unproved = chain_model_curves(R);
   REQUIRE(unproved.size() == 1);
@@ -234,17 +242,9 @@ TEST_CASE("model curves: the handle's upper end cuts the body in one closed curv
   Model_intersection_options o;
   o.self_intersections = false;
   const Model_intersection R = intersect_model(patches, o);
-  Model_curve_options co;
-  co.patches = &patches;
-  const std::vector<Model_curve> curves = chain_model_curves(R, co);
-  REQUIRE(curves.size() == 1);
-  const Model_curve& c = curves[0];
-  CHECK(c.closed);
-  REQUIRE(c.pieces.size() == 2);
   // both links proved: the crossings of the handle's seam with the body's, exact points of the body's seam curve
   // (shared by sectors 5 and 6)
-  CHECK(c.links == 2);
-  CHECK(c.links_proved == 2);
+  const Model_curve c = closed_curve_of_two_pieces_with_exact_links(R, patches);
   std::set<std::pair<std::size_t, std::size_t>> pairs;
   for (const auto& p : c.pieces) pairs.insert({R.problems[p.problem].first, R.problems[p.problem].second});
   CHECK(pairs == std::set<std::pair<std::size_t, std::size_t>>{{0, 2}, {1, 3}});
@@ -265,6 +265,31 @@ TEST_CASE("model curves: the handle's upper end cuts the body in one closed curv
     on_seam += std::fabs(p[1]) < 1e-12;
   }
   CHECK(on_seam == 2);  // the two links, each point once
+}
+
+TEST_CASE("model curves: two ends are one exact point only on one boundary curve at one parameter",
+          "[model][curves]") {
+  // Two unit squares glued along x = 0: the left one's side u = 1 and the right one's side u = 0 are the segment
+  // (0, 2v - 1, 0), v in [0, 1]; a third patch has that segment reversed, (0, 1 - 2v, 0), as its side u = 0.
+  using bezoutian_test::patch_from_power;
+  const std::vector<Rational_bezier_patch<Rational>> patches{
+      patch_from_power({"u - 1", "2*v - 1", "0"}, 1, 1), patch_from_power({"u", "2*v - 1", "0"}, 1, 1),
+      patch_from_power({"u", "1 - 2*v", "0"}, 1, 1)};
+  // y = 1/sqrt 2 on the seam: v = 1/2 + sqrt(2)/4, a root of 8v^2 - 8v + 1 in [0.8, 0.9]; on the reversed side
+  // 1 - v = 1/2 - sqrt(2)/4, the root in [0.1, 0.2]
+  const Polynomial_1<Integer> f(Integer(1), Integer(-8), Integer(8));
+  const Algebraic_real v(f, Rational(8, 10), Rational(9, 10)), w(f, Rational(1, 10), Rational(2, 10));
+  using internal::Boundary_curve_point;
+  auto at = [](std::size_t patch, int side, const Algebraic_real& x) {
+    return std::vector<Boundary_curve_point>{{patch, side, x}};
+  };
+  CHECK(internal::one_minus(v) == w);
+  CHECK(internal::one_minus(Algebraic_real(Rational(1, 3))) == Algebraic_real(Rational(2, 3)));
+  CHECK(internal::same_exact_point(patches, at(0, 1, v), at(1, 3, v)));        // one seam, one parameter
+  CHECK_FALSE(internal::same_exact_point(patches, at(0, 1, v), at(1, 3, w)));  // the other end of the seam
+  CHECK(internal::same_exact_point(patches, at(0, 1, v), at(2, 3, w)));        // the seam reversed: 1 - v
+  CHECK_FALSE(internal::same_exact_point(patches, at(0, 1, v), at(2, 3, v)));
+  CHECK_FALSE(internal::same_exact_point(patches, at(0, 1, v), at(1, 1, v)));  // another side: x = 1
 }
 
 TEST_CASE("model: a patch with a pole is refused with its reason, the rest of the model is answered", "[model]") {

@@ -20,8 +20,11 @@
 // exact common point of the two patches' boundary curves, and the only zero of the partner equations in its box),
 // and the sheet's end partner lies in that box. Two such ends are one point of space when they lie on one boundary
 // curve of the model (identical control nets, in the same or the opposite direction) at the same parameter
-// (compared exactly, as algebraic numbers). Other links (an end on a side of one patch only, at a singular point
-// of D = 0) stay floating point.
+// (compared exactly, as algebraic numbers). What is exact: the arc's end is the contact, and the two contacts are
+// one point. What is floating point: that the sheet ending there is the contact's partner, decided by its traced
+// end partner lying in the proved box (the box is tiny; an arc with one sheet in a certified locus has no other
+// partner there). Other links (an end on a side of one patch only, at a singular point of D = 0) stay floating
+// point.
 #ifndef BEZOUTIAN_INTERSECTION_MODEL_CURVES_H
 #define BEZOUTIAN_INTERSECTION_MODEL_CURVES_H
 
