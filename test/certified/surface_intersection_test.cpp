@@ -1288,6 +1288,45 @@ TEST_CASE("teapot: sectors meeting at the pole: the collapsed and the shared sid
   }
 }
 
+// Neighbours along a seam: the rim and the body (0, 4) and the body and the bottom (8, 31) are pieces of surfaces
+// of revolution over the same angular arcs, whose profiles meet only at their common end; the handle's halves (12,
+// 13) are mirror images in y = 0, each on its own side. So each pair meets along its shared boundary curves alone.
+// D = 0 has arcs beside the seams that end on them, with their partner tending to the seam's; the blow-up along
+// the seam (lifting/internal/seam_blowup_exclusion.h) proves their fibres complete up to the end.
+TEST_CASE("teapot: neighbours along a seam meet on the seam alone, certified", "[surface][teapot][edge]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  for (const auto& pair : {std::array<int, 2>{0, 4}, std::array<int, 2>{8, 31}, std::array<int, 2>{12, 13}}) {
+    INFO("patches " << pair[0] << ", " << pair[1]);
+    const Patch &phi = doc.patches[std::size_t(pair[0])], &psi = doc.patches[std::size_t(pair[1])];
+    const Surface_locus L = intersection_locus(phi, psi);
+    std::string why;
+    CHECK(locus_certified(L, &why));
+    INFO(why);
+    std::size_t seams = 0;
+    for (const auto& l : L.edge_lines) seams += l.cause == Locus_edge_line::shared_curve;
+    CHECK(seams == (pair[0] == 12 ? 2u : 1u));
+    std::size_t ends = 0;
+    for (const auto& arc : L.arcs) {
+      CHECK(arc.fibre_undecided_fraction == 0);
+      for (const auto& q : arc.points) {
+        if (!q.genuine) continue;
+        // a genuine point is a point of a shared side of the box
+        bool on_seam = false;
+        for (const auto& l : L.edge_lines) {
+          const double c = CGAL::to_double(l.value);
+          on_seam = on_seam || (l.cause == Locus_edge_line::shared_curve &&
+                                q.projection[l.side == 1 || l.side == 3 ? 0 : 1] == c);
+        }
+        CHECK(on_seam);
+        CHECK(pair_distance(phi, psi, q) < 1e-9);
+        ++ends;
+      }
+    }
+    CHECK(ends > 0);  // arcs of D = 0 do end on the seams
+  }
+}
+
 // The same sectors with the partner domain [1/2, 1] x [0, 1]: a pair on the side u = 0 has its first point at u = 0,
 // outside that domain, so the side is phantom at every point (proved by the definition); the side t = 0 runs over
 // u in [0, 1], beyond the domain's u range, so no cause is proved for it (unexplained, status not proved).

@@ -1339,6 +1339,13 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
   std::unique_ptr<Double_curve_equation> D_double;
   const Patch_jacobian_enclosure phi_jacobian(eq, 0);
   std::size_t inserted = 0, full_fibres = 0;
+  // the boundary curves shared with the partner, as seams of the partner equations (seam_blowup_exclusion.h)
+  std::vector<Shared_seam> seams;
+  if (!L.self_intersection && !o.partner_domain_unbounded)
+    for (const Locus_edge_line& l : L.edge_lines)
+      if (l.cause == Locus_edge_line::shared_curve && !l.interior)
+        if (const auto S = shared_seam(eq, l.side, l.value, l.partner_side, l.partner_value, o.box, o.partner_domain))
+          seams.push_back(*S);
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     if (time) time->check("complete lifting");
     Locus_arc& arc = L.arcs[k];
@@ -1455,7 +1462,7 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
                                o.max_refinement_points - inserted);
       }
       return complete_edge_lifting(eq, o.partner_domain, o.partner_domain_unbounded, e, fibres, budget, split_boxes,
-                                   chains, singular_boxes, &L.equation.square_free, exact_points, every_partner);
+                                   chains, singular_boxes, &L.equation.square_free, exact_points, every_partner, seams);
     };
     Edge_sheets es = attempt(false);
     if (es.undecided_fraction > 0 && full_fibres + e.polyline.size() <= o.max_complete_fibres) {

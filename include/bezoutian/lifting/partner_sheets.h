@@ -32,6 +32,7 @@
 #include <bezoutian/lifting/internal/half_branch_chains.h>
 #include <bezoutian/lifting/internal/partner_fold_proofs.h>
 #include <bezoutian/lifting/internal/partner_span_proofs.h>
+#include <bezoutian/lifting/internal/seam_blowup_exclusion.h>
 #include <bezoutian/topology/Curve_topology.h>
 
 #include <algorithm>
@@ -443,6 +444,84 @@ inline double half_branch_fibre_share(const Partner_equations& eq, const Paramet
   return std::min(1.0, proved / full);
 }
 
+/// The polyline points k0..k1 of the piece `pc`, whose arc lies in the box X (the strip of a span, or the cell of a
+/// half-branch), beside a shared boundary curve: when only_seam_zeros proves that every zero of the partner
+/// equations over X with its partner in the domain lies on the seam, the fibre over them is complete. The points
+/// off the seam's side have no partner in the domain (phantom); a point on the side has the seam's partner alone,
+/// which the sheet there carries (given the seam's exact enclosure). Not tried when a sheet in the domain at a
+/// point on the side is not the seam's partner. X's range of the seam's fixed coordinate is stretched to the side
+/// when it stops short of it by at most its own width.
+inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& domain, const Curve_topology_edge& e,
+                              const Curve_topology_piece& pc, std::size_t k0, std::size_t k1, Parameter_box X,
+                              const std::vector<Shared_seam>& seams, Edge_sheets& out, Exclusion_budget& budget) {
+  using D = Double_interval;
+  auto coord = [&](std::size_t k, int c) {
+    if (k == pc.first) return D{pc.first_box[2 * c], pc.first_box[2 * c + 1]};
+    if (k == pc.last) return D{pc.last_box[2 * c], pc.last_box[2 * c + 1]};
+    return D{e.polyline[k][std::size_t(c)], e.polyline[k][std::size_t(c)]};
+  };
+  for (const Shared_seam& S : seams) {
+    const D c = D::of(S.x_value), cy = D::of(S.y_value), g0 = D::of(S.g0), g1 = D::of(S.g1);
+    auto on_side = [&](std::size_t k) {
+      const D x = coord(k, S.fixed_x);
+      return x.lo <= c.hi && c.lo <= x.hi;
+    };
+    auto seam_partner = [&](std::size_t k) {  // the seam's partner (v, s) of the point k on the side
+      std::array<D, 2> y;
+      y[std::size_t(S.fixed_y - 2)] = cy;
+      y[std::size_t(S.dependent - 2)] = g0 + g1 * coord(k, S.along);
+      return y;
+    };
+    // every sheet in the domain at an end on the side is the seam's partner (elsewhere the proof decides: a sheet
+    // point there within rounding of the domain is not a partner in it when the proof succeeds)
+    bool explained = true;
+    for (const Partner_sheet& P : out.sheets)
+      for (std::size_t k = k0; k <= k1; ++k) {
+        if (k < P.first || k > P.last() || !explained || !on_side(k)) continue;
+        const std::array<double, 2>& y = P.partner[k - P.first];
+        if (!partner_in_domain(eq, domain, false, e.polyline[k], y, 1e-6)) continue;
+        const std::array<D, 2> w = seam_partner(k);
+        for (int j = 0; j < 2 && explained; ++j) explained = std::fabs(y[std::size_t(j)] - w[std::size_t(j)].mid()) <= 1e-6;
+      }
+    if (!explained) continue;
+    Parameter_box Y = X;
+    Rational &x0 = S.fixed_x == 0 ? Y.u0 : Y.v0, &x1 = S.fixed_x == 0 ? Y.u1 : Y.v1;
+    if (S.x_inward > 0 && S.x_value <= x0 && x0 - S.x_value <= x1 - x0) x0 = S.x_value;
+    if (S.x_inward < 0 && x1 <= S.x_value && S.x_value - x1 <= x1 - x0) x1 = S.x_value;
+    if (!only_seam_zeros(eq, S, Y, budget)) continue;
+    for (std::size_t k = k0; k <= k1; ++k) {
+      if (!on_side(k)) {
+        out.phantom_proved[k] = 1;
+        continue;
+      }
+      const std::array<D, 2> w = seam_partner(k);
+      const D x = coord(k, S.fixed_x);
+      // genuine where the point is exactly on the side and the seam's partner inside the domain
+      const bool inside = x.lo == x.hi && c.lo == c.hi && x.lo == c.lo && D::of(domain.v0).lo <= w[0].lo &&
+                          w[0].hi <= D::of(domain.v1).hi && D::of(domain.u0).lo <= w[1].lo && w[1].hi <= D::of(domain.u1).hi;
+      for (Partner_sheet& P : out.sheets) {
+        if (k < P.first || k > P.last() || P.genuine_proved[k - P.first]) continue;
+        if (!partner_in_domain(eq, domain, false, e.polyline[k], P.partner[k - P.first], 1e-6)) continue;
+        P.enclosure[k - P.first] = w;
+        P.genuine_proved[k - P.first] = inside;
+      }
+    }
+    return true;
+  }
+  return false;
+}
+
+/// The span (polyline points i, i + 1 over T) of a graph piece beside a shared boundary curve: fibre_beside_seam on
+/// the span's strip (T along the graph axis, the cell's range across).
+inline bool span_beside_seam(const Partner_equations& eq, const Parameter_box& domain, const Curve_topology_edge& e,
+                             const Curve_topology_piece& pc, std::size_t i, const Double_interval& T,
+                             const std::vector<Shared_seam>& seams, Edge_sheets& out, Exclusion_budget& budget) {
+  Parameter_box X = pc.cell;
+  (pc.graph_axis == 0 ? X.u0 : X.v0) = Rational(T.lo);
+  (pc.graph_axis == 0 ? X.u1 : X.v1) = Rational(T.hi);
+  return fibre_beside_seam(eq, domain, e, pc, i, i + 1, X, seams, out, budget);
+}
+
 /// Every sheet of the edge `e` (fibres[i]: the partners of polyline point i, fibre_partners) and the proof that
 /// they are every partner in the domain, span by span (the header comment; a span is halved up to three times
 /// while unproved, up to six times while a sheet's enclosure reaches over the domain's side, and towards a certified
@@ -459,7 +538,7 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
                                          const std::vector<std::array<Double_interval, 2>>& singular_boxes = {},
                                          const Polynomial_2<Integer>* curve = nullptr,
                                          const std::vector<Partner_boundary_point>& exact_points = {},
-                                         bool split_span_boxes = false) {
+                                         bool split_span_boxes = false, const std::vector<Shared_seam>& seams = {}) {
   using D = Double_interval;
   Edge_sheets out;
   out.sheets = chain_sheets(fibres);
@@ -475,6 +554,10 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
       const double len = std::fabs(e.polyline[pc.last][0] - e.polyline[pc.first][0]) +
                          std::fabs(e.polyline[pc.last][1] - e.polyline[pc.first][1]);
       total += len;
+      // beside a seam (an arc ending on a shared side at a singular point of D = 0): the cell holds no partner in
+      // the domain but the seam's, which decides the fibre and the status of the whole piece
+      if (!unbounded && !seams.empty() && fibre_beside_seam(eq, domain, e, pc, pc.first, pc.last, pc.cell, seams, out, budget))
+        continue;
       status_open += len;  // (the status: certify_half_branch)
       const Half_branch_chain* chain = chains && !unbounded ? chains->find(pc) : nullptr;
       undecided += len * (1 - (chain ? half_branch_fibre_share(eq, domain, e, pc, *chain, out.sheets) : 0));
@@ -512,13 +595,16 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         if (at_a && at_b) active.push_back(s);
         else broken = true;
       }
+      // next to a seam: every partner in the domain over the span's strip may be the seam's (seam_blowup_exclusion.h)
+      auto beside_seam = [&] { return !seams.empty() && span_beside_seam(eq, domain, e, pc, i, T, seams, out, budget); };
       if (broken) {
+        if (beside_seam()) continue;
         span_undecided[i] += T.hi - T.lo;
         span_open[i] += T.hi - T.lo;
         continue;
       }
       if (active.empty()) {  // no partner at either end: the strip of the cell over T holds none either
-        if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0]) {
+        if (!exclude_strips(eq, domain, axis, {T}, pc.cell, nullptr, budget)[0] && !beside_seam()) {
           span_undecided[i] += T.hi - T.lo;
           span_open[i] += T.hi - T.lo;
         }
@@ -665,6 +751,8 @@ inline Edge_sheets complete_edge_lifting(const Partner_equations& eq, const Para
         span_undecided[i] += std::fabs(t1 - t0);
         span_open[i] += std::fabs(t1 - t0);
       }
+      // the parts left open may lie beside a seam, where the proofs above cannot succeed
+      if ((span_undecided[i] > 0 || span_open[i] > 0) && beside_seam()) span_undecided[i] = span_open[i] = 0;
     }
     prove_piece_folds(eq, domain, e, pc, out, span_undecided, span_open, budget);
   }
