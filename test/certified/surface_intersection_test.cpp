@@ -1290,13 +1290,15 @@ TEST_CASE("teapot: sectors meeting at the pole: the collapsed and the shared sid
 
 // Neighbours along a seam: the rim and the body (0, 4) and the body and the bottom (8, 31) are pieces of surfaces
 // of revolution over the same angular arcs, whose profiles meet only at their common end; the handle's halves (12,
-// 13) are mirror images in y = 0, each on its own side. So each pair meets along its shared boundary curves alone.
-// D = 0 has arcs beside the seams that end on them, with their partner tending to the seam's; the blow-up along
-// the seam (lifting/internal/seam_blowup_exclusion.h) proves their fibres complete up to the end.
+// 13) and the spout's (16, 17) are mirror images in y = 0, each on its own side. So each pair meets along its shared
+// boundary curves alone. D = 0 has arcs beside the seams that end on them, with their partner tending to the seam's;
+// the blow-up along the seam (lifting/internal/seam_blowup_exclusion.h) proves their fibres complete up to the end,
+// also on the half-branches from the singular points of D = 0 on the spout's seams.
 TEST_CASE("teapot: neighbours along a seam meet on the seam alone, certified", "[surface][teapot][edge]") {
   const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
   REQUIRE(doc.patches.size() == 32);
-  for (const auto& pair : {std::array<int, 2>{0, 4}, std::array<int, 2>{8, 31}, std::array<int, 2>{12, 13}}) {
+  for (const auto& pair : {std::array<int, 2>{0, 4}, std::array<int, 2>{8, 31}, std::array<int, 2>{12, 13},
+                           std::array<int, 2>{16, 17}}) {
     INFO("patches " << pair[0] << ", " << pair[1]);
     const Patch &phi = doc.patches[std::size_t(pair[0])], &psi = doc.patches[std::size_t(pair[1])];
     const Surface_locus L = intersection_locus(phi, psi);
@@ -1305,7 +1307,7 @@ TEST_CASE("teapot: neighbours along a seam meet on the seam alone, certified", "
     INFO(why);
     std::size_t seams = 0;
     for (const auto& l : L.edge_lines) seams += l.cause == Locus_edge_line::shared_curve;
-    CHECK(seams == (pair[0] == 12 ? 2u : 1u));
+    CHECK(seams == (pair[0] >= 12 ? 2u : 1u));
     std::size_t ends = 0;
     for (const auto& arc : L.arcs) {
       CHECK(arc.fibre_undecided_fraction == 0);
@@ -1325,6 +1327,33 @@ TEST_CASE("teapot: neighbours along a seam meet on the seam alone, certified", "
     }
     CHECK(ends > 0);  // arcs of D = 0 do end on the seams
   }
+}
+
+// Diagonal neighbours around a vertex of the model: rim 1 and body 4 meet at one point, the corner (u, v) = (1, 0) of
+// the rim and (s, t) = (0, 1) of the body (teapot32_topology.txt: 1|4 share no curve; the four patches 0, 1, 4, 5
+// meet at that vertex). D = 0 has an arc ending at the corner (1, 1) of the (u, t) box, its partner tending to the
+// corner's; the blow-up at the corner proves the fibre complete up to the end.
+TEST_CASE("teapot: diagonal neighbours touching at a corner, certified", "[surface][teapot][edge]") {
+  const auto doc = io::read_geometry_file(bezoutian_test::shared_data("teapot/teapot32.bpt"));
+  REQUIRE(doc.patches.size() == 32);
+  const Patch &phi = doc.patches[1], &psi = doc.patches[4];
+  const Surface_locus L = intersection_locus(phi, psi);
+  std::string why;
+  CHECK(locus_certified(L, &why));
+  INFO(why);
+  CHECK(L.edge_lines.empty());
+  std::size_t corner = 0;
+  for (const auto& arc : L.arcs) {
+    CHECK(arc.fibre_undecided_fraction == 0);
+    for (const auto& q : arc.points)
+      if (q.genuine) {
+        CHECK(std::fabs(q.projection[0] - 1) + std::fabs(q.projection[1] - 1) < 1e-12);
+        CHECK(std::fabs(q.first[0] - 1) + std::fabs(q.first[1]) < 1e-12);
+        CHECK(pair_distance(phi, psi, q) < 1e-12);
+        ++corner;
+      }
+  }
+  CHECK(corner > 0);
 }
 
 // The same sectors with the partner domain [1/2, 1] x [0, 1]: a pair on the side u = 0 has its first point at u = 0,

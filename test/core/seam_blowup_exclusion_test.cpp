@@ -3,7 +3,8 @@
 // circle continued by its tangent line (the seam alone, rational), a plane continued by a crease that folds back
 // and crosses it again along u = 1/2 (a genuine zero off the seam: the proof must fail), a fold back tangent to
 // the plane on its own side (the seam alone, but the kernel of the Jacobian points into both domains: the method
-// declines), and a seam shared with another parametrization (no affine correspondence: no seam).
+// declines), a seam shared with another parametrization (no affine correspondence: no seam), and a paraboloid
+// touching a plane quadrant at a common corner (the blow-up at a point).
 #include <catch2/catch.hpp>
 
 #include <bezoutian/lifting/internal/seam_blowup_exclusion.h>
@@ -92,4 +93,31 @@ TEST_CASE("seam blow-up: a boundary curve shared with another parametrization gi
   const Patch psi = bezoutian_test::patch_from_power({"1+u", "v^2", "u^2"}, 2, 2);
   const internal::Partner_equations eq(plane(), psi);
   CHECK_FALSE(internal::shared_seam(eq, 1, Q(1), 3, Q(0), unit, unit));
+}
+
+TEST_CASE("corner blow-up: a paraboloid touching a plane quadrant at their common corner", "[seam]") {
+  // phi(u, v) = (u, v, 0) and psi(s, t) = (-s, -t, s^2 + t^2) meet at the origin alone, each at a corner of its
+  // domain, with one tangent plane there (as two diagonal patches around a vertex of a model)
+  const Patch psi = bezoutian_test::patch_from_power({"-u", "-v", "u^2+v^2"}, 2, 2);
+  const internal::Partner_equations eq(plane(), psi);
+  const std::vector<internal::Shared_seam> corners = internal::shared_corners(eq, unit, unit, {});
+  REQUIRE(corners.size() == 1);
+  const internal::Shared_seam& C = corners[0];
+  CHECK(C.corner);
+  CHECK(C.x_value == 0);
+  CHECK(C.along_value == 0);
+  CHECK(C.y_value == 0);
+  CHECK(C.g0 == 0);
+  internal::Exclusion_budget budget;
+  CHECK(internal::only_seam_zeros(eq, C, unit, budget));
+  CHECK(internal::only_seam_zeros(eq, C, Parameter_box{Q(0), Q(1, 8), Q(0), Q(1, 8)}, budget));
+  // a box away from the corner is not this proof's
+  CHECK_FALSE(internal::only_seam_zeros(eq, C, Parameter_box{Q(1, 2), Q(1), Q(0), Q(1)}, budget));
+  // the paraboloid over the same quadrant, psi(s, t) = (s, t, s^2 + t^2), also meets the plane at the corner
+  // alone, but its domain and the plane's leave the corner in the same directions: declined
+  const Patch same_side = bezoutian_test::patch_from_power({"u", "v", "u^2+v^2"}, 2, 2);
+  const internal::Partner_equations eq2(plane(), same_side);
+  const std::vector<internal::Shared_seam> c2 = internal::shared_corners(eq2, unit, unit, {});
+  REQUIRE(c2.size() == 1);
+  CHECK_FALSE(internal::only_seam_zeros(eq2, c2[0], unit, budget));
 }

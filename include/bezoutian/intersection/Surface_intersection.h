@@ -1346,6 +1346,11 @@ void lift_sheets(Surface_locus& L, const Partner_equations& eq, const Surface_in
       if (l.cause == Locus_edge_line::shared_curve && !l.interior)
         if (const auto S = shared_seam(eq, l.side, l.value, l.partner_side, l.partner_value, o.box, o.partner_domain))
           seams.push_back(*S);
+  // and the corners the two patches share off those curves (the same blow-up at a point)
+  if (!L.self_intersection && !o.partner_domain_unbounded) {
+    const std::vector<Shared_seam> corners = shared_corners(eq, o.box, o.partner_domain, seams);
+    seams.insert(seams.end(), corners.begin(), corners.end());
+  }
   for (std::size_t k = 0; k < L.arcs.size() && k < L.topology.edges.size(); ++k) {
     if (time) time->check("complete lifting");
     Locus_arc& arc = L.arcs[k];

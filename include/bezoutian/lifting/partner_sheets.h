@@ -462,9 +462,10 @@ inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& 
   };
   for (const Shared_seam& S : seams) {
     const D c = D::of(S.x_value), cy = D::of(S.y_value), g0 = D::of(S.g0), g1 = D::of(S.g1);
-    auto on_side = [&](std::size_t k) {
-      const D x = coord(k, S.fixed_x);
-      return x.lo <= c.hi && c.lo <= x.hi;
+    const D ca = D::of(S.along_value);
+    auto on_side = [&](std::size_t k) {  // (a corner: at the corner)
+      const D x = coord(k, S.fixed_x), a = coord(k, S.along);
+      return x.lo <= c.hi && c.lo <= x.hi && (!S.corner || (a.lo <= ca.hi && ca.lo <= a.hi));
     };
     auto seam_partner = [&](std::size_t k) {  // the seam's partner (v, s) of the point k on the side
       std::array<D, 2> y;
@@ -488,6 +489,11 @@ inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& 
     Rational &x0 = S.fixed_x == 0 ? Y.u0 : Y.v0, &x1 = S.fixed_x == 0 ? Y.u1 : Y.v1;
     if (S.x_inward > 0 && S.x_value <= x0 && x0 - S.x_value <= x1 - x0) x0 = S.x_value;
     if (S.x_inward < 0 && x1 <= S.x_value && S.x_value - x1 <= x1 - x0) x1 = S.x_value;
+    if (S.corner) {
+      Rational &a0 = S.along == 0 ? Y.u0 : Y.v0, &a1 = S.along == 0 ? Y.u1 : Y.v1;
+      if (S.along_inward > 0 && S.along_value <= a0 && a0 - S.along_value <= a1 - a0) a0 = S.along_value;
+      if (S.along_inward < 0 && a1 <= S.along_value && S.along_value - a1 <= a1 - a0) a1 = S.along_value;
+    }
     if (!only_seam_zeros(eq, S, Y, budget)) continue;
     for (std::size_t k = k0; k <= k1; ++k) {
       if (!on_side(k)) {
@@ -495,9 +501,10 @@ inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& 
         continue;
       }
       const std::array<D, 2> w = seam_partner(k);
-      const D x = coord(k, S.fixed_x);
-      // genuine where the point is exactly on the side and the seam's partner inside the domain
-      const bool inside = x.lo == x.hi && c.lo == c.hi && x.lo == c.lo && D::of(domain.v0).lo <= w[0].lo &&
+      const D x = coord(k, S.fixed_x), a = coord(k, S.along);
+      // genuine where the point is exactly on the side (at the corner) and the seam's partner inside the domain
+      const bool inside = x.lo == x.hi && c.lo == c.hi && x.lo == c.lo &&
+                          (!S.corner || (a.lo == a.hi && ca.lo == ca.hi && a.lo == ca.lo)) && D::of(domain.v0).lo <= w[0].lo &&
                           w[0].hi <= D::of(domain.v1).hi && D::of(domain.u0).lo <= w[1].lo && w[1].hi <= D::of(domain.u1).hi;
       for (Partner_sheet& P : out.sheets) {
         if (k < P.first || k > P.last() || P.genuine_proved[k - P.first]) continue;

@@ -60,6 +60,9 @@ struct Exclusion_budget {
   /// exclusion tests on the parts of a span's box halved for the complete fibre (partner_sheets.h), per locus
   std::size_t box_split_left = 2000;
   bool take_box_split() { return take(box_split_left); }
+  /// chart boxes of the blow-up along a shared boundary curve (seam_blowup_exclusion.h), per locus: a few
+  /// microseconds each; next to a singular point of D = 0 on the seam one proof may take tens of thousands
+  std::size_t seam_boxes_left = 400000;
   bool take_blown_up() {
     if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
     if (!take(blown_up_left)) return false;

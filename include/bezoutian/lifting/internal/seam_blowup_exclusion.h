@@ -53,6 +53,11 @@ struct Shared_seam {
   int x_inward = 1, y_inward = 1;  ///< +1: the box (the partner domain) lies on the side z >= value
   Rational dependent_lo, dependent_hi;  ///< the partner domain's range of z[dependent]
   Rational fixed_y_lo, fixed_y_hi;      ///< the partner domain's range of z[fixed_y] (y_value is one of its ends)
+  /// A common corner of the box and the partner domain instead of a curve: z[along] = along_value and
+  /// z[dependent] = g0 (g1 = 0) as well, each one-sided (towards the box, the partner domain)
+  bool corner = false;
+  Rational along_value;
+  int along_inward = 1, dependent_inward = 1;
 };
 
 namespace seam_detail {
@@ -148,64 +153,151 @@ inline std::optional<Shared_seam> shared_seam(const Partner_equations& eq, int s
   return std::nullopt;
 }
 
+/// The corners shared by the two patches: a corner (u*, v*) of the first patch's domain (u* a side of the box,
+/// v* of the partner domain) and a corner (s*, t*) of the second's with the same point, E(u*, t*, v*, s*) = 0
+/// exactly, both weights nonzero; as where four patches of a model meet at a vertex and two diagonal ones touch
+/// there. Corners on one of the `seams` are left out (the seam's blow-up holds them).
+inline std::vector<Shared_seam> shared_corners(const Partner_equations& eq, const Parameter_box& box,
+                                               const Parameter_box& domain, const std::vector<Shared_seam>& seams) {
+  using namespace seam_detail;
+  std::vector<Shared_seam> out;
+  if (eq.self_intersection() || !(box.u0 < box.u1) || !(box.v0 < box.v1) || !(domain.u0 < domain.u1) ||
+      !(domain.v0 < domain.v1))
+    return out;
+  for (const Rational& u : {box.u0, box.u1})
+    for (const Rational& t : {box.v0, box.v1})
+      for (const Rational& v : {domain.v0, domain.v1})
+        for (const Rational& s : {domain.u0, domain.u1}) {
+          std::array<Rational, 4> A, B;  // the forms at P = (u, v) and Q = (s, t)
+          for (int f = 0; f < 4; ++f) {
+            const Poly a = compose(eq.form(0, f), {u}, {v}), b = compose(eq.form(1, f), {s}, {t});
+            A[std::size_t(f)] = a.empty() ? Rational(0) : a[0];
+            B[std::size_t(f)] = b.empty() ? Rational(0) : b[0];
+          }
+          bool same = A[0] != 0 && B[0] != 0;
+          for (std::size_t f = 1; f < 4 && same; ++f) same = A[f] * B[0] == B[f] * A[0];
+          if (!same) continue;
+          bool on_seam = false;
+          for (const Shared_seam& S : seams) {
+            const std::array<Rational, 4> z{u, t, v, s};
+            on_seam = on_seam || (z[std::size_t(S.fixed_x)] == S.x_value && z[std::size_t(S.fixed_y)] == S.y_value &&
+                                  z[std::size_t(S.dependent)] == S.g0 + S.g1 * z[std::size_t(S.along)]);
+          }
+          if (on_seam) continue;
+          Shared_seam C;
+          C.corner = true;
+          C.fixed_x = 0, C.fixed_y = 3, C.dependent = 2, C.along = 1;
+          C.x_value = u, C.x_inward = u == box.u0 ? 1 : -1;
+          C.y_value = s, C.y_inward = s == domain.u0 ? 1 : -1;
+          C.fixed_y_lo = domain.u0, C.fixed_y_hi = domain.u1;
+          C.g0 = v, C.g1 = 0, C.dependent_inward = v == domain.v0 ? 1 : -1;
+          C.dependent_lo = domain.v0, C.dependent_hi = domain.v1;
+          C.along_value = t, C.along_inward = t == box.v0 ? 1 : -1;
+          out.push_back(C);
+        }
+  return out;
+}
+
 /// Proves that every zero of the partner equations with (u, t) in the box `X` and its partner (v, s) in the
-/// partner domain lies on the seam S (module comment). `X` must touch the seam's side of the projection box
-/// (its range of z[fixed_x] ends at the seam's value, on the box's side); false otherwise, and when the chart
-/// boxes are not all excluded within `max_boxes` tests.
+/// partner domain lies on the seam S, or is the corner S (module comment). `X` must reach the seam's side of the
+/// projection box (its range of z[fixed_x] ends at the seam's value, on the box's side; for a corner, its range of
+/// z[along] ends at that corner's value too); false otherwise, and when the chart boxes are not all excluded within
+/// `max_boxes` tests and the locus's `budget.seam_boxes_left`, which pays for the tests taken.
 inline bool only_seam_zeros(const Partner_equations& eq, const Shared_seam& S, const Parameter_box& X,
-                            Exclusion_budget& budget, std::size_t max_boxes = 6000) {
+                            Exclusion_budget& budget, std::size_t max_boxes = 100000) {
   using D = Double_interval;
-  const Rational x_lo = S.fixed_x == 0 ? X.u0 : X.v0, x_hi = S.fixed_x == 0 ? X.u1 : X.v1;
-  if (S.x_inward > 0 ? x_lo != S.x_value : x_hi != S.x_value) return false;
-  const Rational a_lo = S.along == 0 ? X.u0 : X.v0, a_hi = S.along == 0 ? X.u1 : X.v1;
-  const D one{1, 1};
-  const D h1 = D::of(x_hi - x_lo), A = D::hull(a_lo, a_hi), g0 = D::of(S.g0), g1 = D::of(S.g1),
-          xc = D::of(S.x_value), yc = D::of(S.y_value), dlo = D::of(S.dependent_lo), dhi = D::of(S.dependent_hi);
-  const D G = g0 + g1 * A;  // g over the along range
-  // d2 runs over the partner domain's width on z[fixed_y]; d3 = z_d - g(a) over [dlo - G.hi, dhi - G.lo]
-  const D h2 = D::of(S.fixed_y_hi - S.fixed_y_lo);
-  const double h3 = std::max((dhi - G).hi, (G - dlo).hi);
-  if (!(h1.hi > 0) || !(h2.hi > 0) || !(h3 > 0) || !(A.lo <= A.hi)) return false;
-  const D H1{h1.hi, h1.hi}, H2{h2.hi, h2.hi}, H3{h3, h3};
-  const D s1{double(S.x_inward), double(S.x_inward)}, s2{double(S.y_inward), double(S.y_inward)};
+  std::size_t tests = 0;
+  struct Pay {  // the tests taken, on every return
+    Exclusion_budget& budget;
+    const std::size_t& tests;
+    ~Pay() { budget.seam_boxes_left -= std::min(tests, budget.seam_boxes_left); }
+  } pay{budget, tests};
+  max_boxes = std::min(max_boxes, budget.seam_boxes_left);
+  auto range = [&](int i, Rational& lo, Rational& hi) {  // X's range of the projection coordinate z[i]
+    lo = i == 0 ? X.u0 : X.v0;
+    hi = i == 0 ? X.u1 : X.v1;
+  };
+  // X reaches the one-sided value c of z[i] from the side `inward`: the extent h of X from it
+  auto reach = [&](int i, const Rational& c, int inward, D& h) {
+    Rational lo, hi;
+    range(i, lo, hi);
+    if (inward > 0 ? lo != c : hi != c) return false;
+    h = D::of(hi - lo);
+    return h.hi > 0;
+  };
+  // Each coordinate: one-sided (blown up, alpha in [0, 1]), two-sided (blown up, alpha in [-1, 1]) or free (the
+  // seam's own coordinate, not blown up). z_i = base_i + r step_i alpha_i, with base_dependent = g0 + g1 z_along.
+  enum Role { one_sided, two_sided, free };
+  std::array<Role, 4> role;
+  std::array<D, 4> base, step;
+  const D g0 = D::of(S.g0), g1 = D::of(S.g1), dlo = D::of(S.dependent_lo), dhi = D::of(S.dependent_hi);
+  const std::size_t fx = std::size_t(S.fixed_x), fy = std::size_t(S.fixed_y), dep = std::size_t(S.dependent),
+                    al = std::size_t(S.along);
+  D h;
+  if (!reach(S.fixed_x, S.x_value, S.x_inward, h)) return false;
+  role[fx] = one_sided, base[fx] = D::of(S.x_value), step[fx] = D{double(S.x_inward), double(S.x_inward)} * D{h.hi, h.hi};
+  h = D::of(S.fixed_y_hi - S.fixed_y_lo);
+  if (!(h.hi > 0)) return false;
+  role[fy] = one_sided, base[fy] = D::of(S.y_value), step[fy] = D{double(S.y_inward), double(S.y_inward)} * D{h.hi, h.hi};
+  Rational a_lo, a_hi;
+  range(S.along, a_lo, a_hi);
+  const D A = D::hull(a_lo, a_hi);
+  if (!(A.lo <= A.hi)) return false;
+  if (S.corner) {
+    if (!reach(S.along, S.along_value, S.along_inward, h)) return false;
+    role[al] = one_sided, base[al] = D::of(S.along_value), step[al] = D{double(S.along_inward), double(S.along_inward)} * D{h.hi, h.hi};
+    h = D::of(S.dependent_hi - S.dependent_lo);
+    if (!(h.hi > 0)) return false;
+    role[dep] = one_sided, base[dep] = g0,
+    step[dep] = D{double(S.dependent_inward), double(S.dependent_inward)} * D{h.hi, h.hi};
+  } else {
+    // d3 = z_d - g(a) over [dlo - G.hi, dhi - G.lo], G = g over the along range
+    const D G = g0 + g1 * A;
+    const double h3 = std::max((dhi - G).hi, (G - dlo).hi);
+    if (!(h3 > 0)) return false;
+    role[al] = free, base[al] = A, step[al] = D{0, 0};
+    role[dep] = two_sided, step[dep] = D{h3, h3};
+  }
   struct Chart_box {
-    int face;  // 0: alpha1 = 1, 1: alpha2 = 1, 2: alpha3 = 1, 3: alpha3 = -1
-    D r, a, p, q;  // p, q: the two free alphas (in the order alpha1, alpha2, alpha3 without the face's)
+    std::size_t face;  // the coordinate whose alpha is +-1
+    double sign;       // that alpha's value
+    D r, a;            // a: the free coordinate's range (a seam)
+    std::array<D, 4> alpha;
   };
   std::vector<Chart_box> stack;
   const D unit{0, 1}, sym{-1, 1};
-  stack.push_back({0, unit, A, unit, sym});
-  stack.push_back({1, unit, A, unit, sym});
-  stack.push_back({2, unit, A, unit, unit});
-  stack.push_back({3, unit, A, unit, unit});
+  for (std::size_t f = 0; f < 4; ++f) {
+    if (role[f] == free) continue;
+    for (const double sign : {1.0, -1.0}) {
+      if (sign < 0 && role[f] != two_sided) continue;
+      Chart_box b{f, sign, unit, A, {}};
+      for (std::size_t i = 0; i < 4; ++i) b.alpha[i] = role[i] == two_sided ? sym : unit;
+      b.alpha[f] = D{sign, sign};
+      stack.push_back(b);
+    }
+  }
   const double a_width = std::max(A.hi - A.lo, 1e-300);
-  std::size_t tests = 0;
   while (!stack.empty()) {
     const Chart_box b = stack.back();
     stack.pop_back();
     if (++tests > max_boxes) return false;
     if (tests % 64 == 0) budget.poll();
-    const D alpha1 = b.face == 0 ? one : b.p, alpha2 = b.face == 1 ? one : (b.face == 0 ? b.p : b.q),
-            alpha3 = b.face == 2 ? one : (b.face == 3 ? D{-1, -1} : b.q);
-    // Delta, per unit r, in the coordinates (fixed_x, fixed_y, dependent); 0 along the seam
-    std::array<D, 4> delta{D{0, 0}, D{0, 0}, D{0, 0}, D{0, 0}}, z0{}, z{}, hull{};
-    delta[std::size_t(S.fixed_x)] = s1 * H1 * alpha1;
-    delta[std::size_t(S.fixed_y)] = s2 * H2 * alpha2;
-    delta[std::size_t(S.dependent)] = H3 * alpha3;
-    z0[std::size_t(S.fixed_x)] = xc;
-    z0[std::size_t(S.fixed_y)] = yc;
-    z0[std::size_t(S.dependent)] = g0 + g1 * b.a;
-    z0[std::size_t(S.along)] = b.a;
+    // Delta (per unit r) and the centre z0 of the box's points; z = z0 + r Delta, hull: the segments from z0
+    std::array<D, 4> delta, z0, z, hull;
+    for (std::size_t i = 0; i < 4; ++i) {
+      delta[i] = role[i] == free ? D{0, 0} : step[i] * b.alpha[i];
+      z0[i] = role[i] == free ? b.a : base[i];
+    }
+    if (!S.corner) z0[dep] = g0 + g1 * b.a;
     const D segment{0, b.r.hi};
     for (std::size_t i = 0; i < 4; ++i) {
       z[i] = z0[i] + b.r * delta[i];
       hull[i] = z0[i] + segment * delta[i];
     }
     // (points of the chart box outside the partner domain's range of z[dependent] are not in the region)
-    const D& zd = z[std::size_t(S.dependent)];
-    bool excluded = zd.hi < dlo.lo || dhi.hi < zd.lo;
+    bool excluded = z[dep].hi < dlo.lo || dhi.hi < z[dep].lo;
     std::array<D, 3> E;
-    if (!excluded && b.r.lo > 0) {  // E itself (every point of the box is off the seam), in mean value form
+    if (!excluded && b.r.lo > 0) {  // E itself (every point of the box is off the centre), in mean value form
       std::array<std::array<D, 4>, 3> J;
       eq.evaluate(z, E, &J);
       excluded = !E[0].contains_zero() || !E[1].contains_zero() || !E[2].contains_zero();
@@ -231,18 +323,23 @@ inline bool only_seam_zeros(const Partner_equations& eq, const Shared_seam& S, c
       for (int c = 0; c < 3 && !excluded; ++c) {
         D F{0, 0};
         for (std::size_t i = 0; i < 4; ++i)
-          if (i != std::size_t(S.along)) F = F + J[std::size_t(c)][i] * delta[i];
+          if (role[i] != free) F = F + J[std::size_t(c)][i] * delta[i];
         excluded = !F.contains_zero();
       }
     }
     if (excluded) continue;
-    // split the widest side, the along range measured against its full width
-    const double w[4] = {b.r.hi - b.r.lo, (b.a.hi - b.a.lo) / a_width, b.p.hi - b.p.lo,
-                         (b.q.hi - b.q.lo) / (b.face < 2 ? 2 : 1)};
-    const int k = int(std::max_element(w, w + 4) - w);
+    // split the widest side: r, the free coordinate against its full width, the alphas against theirs
+    double widest = b.r.hi - b.r.lo;
+    int k = -2;  // -2: r, -1: a, i: alpha_i
+    if (!S.corner && (b.a.hi - b.a.lo) / a_width > widest) widest = (b.a.hi - b.a.lo) / a_width, k = -1;
+    for (std::size_t i = 0; i < 4; ++i) {
+      if (role[i] == free || i == b.face) continue;
+      const double w = (b.alpha[i].hi - b.alpha[i].lo) / (role[i] == two_sided ? 2 : 1);
+      if (w > widest) widest = w, k = int(i);
+    }
     Chart_box lo = b, hi = b;
-    D& x_lo = k == 0 ? lo.r : (k == 1 ? lo.a : (k == 2 ? lo.p : lo.q));
-    D& x_hi = k == 0 ? hi.r : (k == 1 ? hi.a : (k == 2 ? hi.p : hi.q));
+    D& x_lo = k == -2 ? lo.r : (k == -1 ? lo.a : lo.alpha[std::size_t(k)]);
+    D& x_hi = k == -2 ? hi.r : (k == -1 ? hi.a : hi.alpha[std::size_t(k)]);
     const double m = x_lo.mid();
     if (!(x_lo.lo < m && m < x_lo.hi)) return false;  // cannot split further
     x_lo.hi = m;
