@@ -121,3 +121,13 @@ TEST_CASE("corner blow-up: a paraboloid touching a plane quadrant at their commo
   REQUIRE(c2.size() == 1);
   CHECK_FALSE(internal::only_seam_zeros(eq2, c2[0], unit, budget));
 }
+
+TEST_CASE("corner blow-up: corners on a collapsed side (a pole) are not isolated contacts", "[seam]") {
+  // two sectors of a cone sharing its apex: phi(u, v) = (u (1 - v), u v, u), psi(s, t) = (-s (1 - t), -s t, s);
+  // every point of the side u = 0 (s = 0) is the apex, so their common zeros there form a surface
+  const Patch phi = bezoutian_test::patch_from_power({"u*(1-v)", "u*v", "u"}, 1, 1);
+  const Patch psi = bezoutian_test::patch_from_power({"-u*(1-v)", "-u*v", "u"}, 1, 1);
+  REQUIRE(phi(Q(0), Q(0)) == psi(Q(0), Q(1)));
+  const internal::Partner_equations eq(phi, psi);
+  CHECK(internal::shared_corners(eq, unit, unit, {}).empty());
+}

@@ -62,7 +62,7 @@ struct Exclusion_budget {
   bool take_box_split() { return take(box_split_left); }
   /// chart boxes of the blow-up along a shared boundary curve (seam_blowup_exclusion.h), per locus: a few
   /// microseconds each; next to a singular point of D = 0 on the seam one proof may take tens of thousands
-  std::size_t seam_boxes_left = 400000;
+  std::size_t seam_boxes_left = 120000;
   bool take_blown_up() {
     if (blown_up_tried >= 2000 && blown_up_proved == 0) return false;
     if (!take(blown_up_left)) return false;

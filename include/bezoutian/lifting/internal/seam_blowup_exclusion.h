@@ -156,7 +156,8 @@ inline std::optional<Shared_seam> shared_seam(const Partner_equations& eq, int s
 /// The corners shared by the two patches: a corner (u*, v*) of the first patch's domain (u* a side of the box,
 /// v* of the partner domain) and a corner (s*, t*) of the second's with the same point, E(u*, t*, v*, s*) = 0
 /// exactly, both weights nonzero; as where four patches of a model meet at a vertex and two diagonal ones touch
-/// there. Corners on one of the `seams` are left out (the seam's blow-up holds them).
+/// there. Corners on one of the `seams` are left out (the seam's blow-up holds them), and so are corners on a
+/// collapsed side of either patch (a pole).
 inline std::vector<Shared_seam> shared_corners(const Partner_equations& eq, const Parameter_box& box,
                                                const Parameter_box& domain, const std::vector<Shared_seam>& seams) {
   using namespace seam_detail;
@@ -164,19 +165,35 @@ inline std::vector<Shared_seam> shared_corners(const Partner_equations& eq, cons
   if (eq.self_intersection() || !(box.u0 < box.u1) || !(box.v0 < box.v1) || !(domain.u0 < domain.u1) ||
       !(domain.v0 < domain.v1))
     return out;
+  using Forms = std::array<Rational, 4>;
+  auto at = [&](int which, const Rational& x, const Rational& y) {  // the forms of a patch at a point
+    Forms F;
+    for (int f = 0; f < 4; ++f) {
+      const Poly p = compose(eq.form(which, f), {x}, {y});
+      F[std::size_t(f)] = p.empty() ? Rational(0) : p[0];
+    }
+    return F;
+  };
+  auto same_point = [](const Forms& A, const Forms& B) {
+    bool same = A[0] != 0 && B[0] != 0;
+    for (std::size_t f = 1; f < 4 && same; ++f) same = A[f] * B[0] == B[f] * A[0];
+    return same;
+  };
+  // a corner whose point is also a neighbouring corner's lies on a collapsed side (a pole): the zeros there form a
+  // surface, not an isolated point, and the blow-up at the point cannot hold them
+  auto on_collapsed_side = [&](int which, const Rational& x, const Rational& y, const Parameter_box& b) {
+    const Forms P = at(which, x, y);
+    return same_point(P, at(which, x == b.u0 ? b.u1 : b.u0, y)) || same_point(P, at(which, x, y == b.v0 ? b.v1 : b.v0));
+  };
+  // (the first patch's domain: u over the box, v over the partner domain; the second's: s over the partner
+  // domain, t over the box)
+  const Parameter_box first{box.u0, box.u1, domain.v0, domain.v1}, second{domain.u0, domain.u1, box.v0, box.v1};
   for (const Rational& u : {box.u0, box.u1})
     for (const Rational& t : {box.v0, box.v1})
       for (const Rational& v : {domain.v0, domain.v1})
         for (const Rational& s : {domain.u0, domain.u1}) {
-          std::array<Rational, 4> A, B;  // the forms at P = (u, v) and Q = (s, t)
-          for (int f = 0; f < 4; ++f) {
-            const Poly a = compose(eq.form(0, f), {u}, {v}), b = compose(eq.form(1, f), {s}, {t});
-            A[std::size_t(f)] = a.empty() ? Rational(0) : a[0];
-            B[std::size_t(f)] = b.empty() ? Rational(0) : b[0];
-          }
-          bool same = A[0] != 0 && B[0] != 0;
-          for (std::size_t f = 1; f < 4 && same; ++f) same = A[f] * B[0] == B[f] * A[0];
-          if (!same) continue;
+          if (!same_point(at(0, u, v), at(1, s, t))) continue;
+          if (on_collapsed_side(0, u, v, first) || on_collapsed_side(1, s, t, second)) continue;
           bool on_seam = false;
           for (const Shared_seam& S : seams) {
             const std::array<Rational, 4> z{u, t, v, s};
