@@ -1321,6 +1321,7 @@ TEST_CASE("teapot: neighbours along a seam meet on the seam alone, certified", "
                                 q.projection[l.side == 1 || l.side == 3 ? 0 : 1] == c);
         }
         CHECK(on_seam);
+        CHECK(q.status_proved);
         CHECK(pair_distance(phi, psi, q) < 1e-9);
         ++ends;
       }

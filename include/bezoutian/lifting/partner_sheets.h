@@ -485,6 +485,21 @@ inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& 
         for (int j = 0; j < 2 && explained; ++j) explained = std::fabs(y[std::size_t(j)] - w[std::size_t(j)].mid()) <= 1e-6;
       }
     if (!explained) continue;
+    // a point on the side is claimed only where it is exactly there with a sheet carrying the seam's partner (a
+    // point whose box merely touches the side could have no partner in the domain at all)
+    auto exactly_on_side = [&](std::size_t k) {
+      const D x = coord(k, S.fixed_x), a = coord(k, S.along);
+      return x.lo == x.hi && c.lo == c.hi && x.lo == c.lo && (!S.corner || (a.lo == a.hi && ca.lo == ca.hi && a.lo == ca.lo));
+    };
+    for (std::size_t k = k0; k <= k1 && explained; ++k) {
+      if (!on_side(k)) continue;
+      bool carried = false;
+      for (const Partner_sheet& P : out.sheets)
+        carried = carried || (k >= P.first && k <= P.last() &&
+                              partner_in_domain(eq, domain, false, e.polyline[k], P.partner[k - P.first], 1e-6));
+      explained = exactly_on_side(k) && carried;
+    }
+    if (!explained) continue;
     Parameter_box Y = X;
     Rational &x0 = S.fixed_x == 0 ? Y.u0 : Y.v0, &x1 = S.fixed_x == 0 ? Y.u1 : Y.v1;
     if (S.x_inward > 0 && S.x_value <= x0 && x0 - S.x_value <= x1 - x0) x0 = S.x_value;
@@ -494,23 +509,29 @@ inline bool fibre_beside_seam(const Partner_equations& eq, const Parameter_box& 
       if (S.along_inward > 0 && S.along_value <= a0 && a0 - S.along_value <= a1 - a0) a0 = S.along_value;
       if (S.along_inward < 0 && a1 <= S.along_value && S.along_value - a1 <= a1 - a0) a1 = S.along_value;
     }
-    if (!only_seam_zeros(eq, S, Y, budget)) continue;
+    // (the points' boxes lie in Y: the proof speaks of them)
+    bool within = true;
+    for (std::size_t k = k0; k <= k1 && within; ++k) {
+      const D u = coord(k, 0), t = coord(k, 1);
+      within = D::of(Y.u0).lo <= u.lo && u.hi <= D::of(Y.u1).hi && D::of(Y.v0).lo <= t.lo && t.hi <= D::of(Y.v1).hi;
+    }
+    if (!within || !only_seam_zeros(eq, S, Y, budget)) continue;
     for (std::size_t k = k0; k <= k1; ++k) {
       if (!on_side(k)) {
         out.phantom_proved[k] = 1;
         continue;
       }
       const std::array<D, 2> w = seam_partner(k);
-      const D x = coord(k, S.fixed_x), a = coord(k, S.along);
-      // genuine where the point is exactly on the side (at the corner) and the seam's partner inside the domain
-      const bool inside = x.lo == x.hi && c.lo == c.hi && x.lo == c.lo &&
-                          (!S.corner || (a.lo == a.hi && ca.lo == ca.hi && a.lo == ca.lo)) && D::of(domain.v0).lo <= w[0].lo &&
+      // genuine where the point is exactly on the side (at the corner, as checked above) and the seam's partner
+      // inside the domain
+      const bool inside = D::of(domain.v0).lo <= w[0].lo &&
                           w[0].hi <= D::of(domain.v1).hi && D::of(domain.u0).lo <= w[1].lo && w[1].hi <= D::of(domain.u1).hi;
       for (Partner_sheet& P : out.sheets) {
         if (k < P.first || k > P.last() || P.genuine_proved[k - P.first]) continue;
         if (!partner_in_domain(eq, domain, false, e.polyline[k], P.partner[k - P.first], 1e-6)) continue;
+        if (!inside) continue;  // (no enclosure claimed)
         P.enclosure[k - P.first] = w;
-        P.genuine_proved[k - P.first] = inside;
+        P.genuine_proved[k - P.first] = 1;
       }
     }
     return true;
